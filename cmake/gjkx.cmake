@@ -1,0 +1,80 @@
+# CMake helpers of the gjkx house. Adding a stage, a chapter or a test is one
+# line: gjkx_stage(), gjkx_chapter(), gjkx_test().
+
+# Warnings for every target of the project (Eigen comes in as a system include).
+function(gjkx_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(GJKX_WARNINGS_AS_ERRORS)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# gjkx_stage(<name> [DEPENDS <earlier stages>...] [LINKS <external targets>...])
+#
+# lib/<name>/include holds the headers <gjkx/<name>/*.hpp>, lib/<name>/src the
+# sources (if any; a stage without sources is header only). The target is
+# gjkx::<name>. A stage may depend only on stages already declared, so the order
+# of the gjkx_stage() lines in lib/CMakeLists.txt is the order of the paper.
+function(gjkx_stage name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS;LINKS" ${ARGN})
+  foreach(dep IN LISTS ARG_DEPENDS)
+    if(NOT TARGET gjkx::${dep})
+      message(FATAL_ERROR "stage ${name} depends on ${dep}, which is not an earlier stage")
+    endif()
+  endforeach()
+  set(dir ${CMAKE_CURRENT_SOURCE_DIR}/${name})
+  file(GLOB sources CONFIGURE_DEPENDS ${dir}/src/*.cpp)
+  list(TRANSFORM ARG_DEPENDS PREPEND gjkx:: OUTPUT_VARIABLE deps)
+  if(sources)
+    add_library(gjkx_${name} STATIC ${sources})
+    target_include_directories(gjkx_${name} PUBLIC ${dir}/include)
+    target_link_libraries(gjkx_${name} PUBLIC ${deps} Eigen3::Eigen PRIVATE ${ARG_LINKS})
+    gjkx_warnings(gjkx_${name})
+  else()
+    add_library(gjkx_${name} INTERFACE)
+    target_include_directories(gjkx_${name} INTERFACE ${dir}/include)
+    target_link_libraries(gjkx_${name} INTERFACE ${deps} Eigen3::Eigen ${ARG_LINKS})
+  endif()
+  add_library(gjkx::${name} ALIAS gjkx_${name})
+  set_property(GLOBAL APPEND PROPERTY GJKX_STAGES ${name})
+endfunction()
+
+# gjkx_chapter(<NN_name> STAGES <stages>...)
+#
+# chapters/<NN_name>/main.cpp, linked with its stages and the renderer. Every
+# chapter takes --out DIR and writes its PNGs there; the target `figures`
+# runs them all into figures/.
+function(gjkx_chapter name)
+  cmake_parse_arguments(ARG "" "" "STAGES" ${ARGN})
+  if(NOT GJKX_HAVE_RENDER)
+    set_property(GLOBAL APPEND PROPERTY GJKX_SKIPPED_CHAPTERS ${name})
+    return()
+  endif()
+  list(TRANSFORM ARG_STAGES PREPEND gjkx:: OUTPUT_VARIABLE stages)
+  add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${name}/main.cpp)
+  target_link_libraries(${name} PRIVATE ${stages} gjkx::render)
+  gjkx_warnings(${name})
+  set_property(GLOBAL APPEND PROPERTY GJKX_CHAPTERS ${name})
+endfunction()
+
+# gjkx_test(<stage> <concept> [LINKS <extra targets>...])
+#
+# tests/<stage>/test_<concept>.cpp, a Catch2 test linked with gjkx::<stage>.
+# Each TEST_CASE becomes one CTest test.
+function(gjkx_test stage concept)
+  cmake_parse_arguments(ARG "" "" "LINKS" ${ARGN})
+  set(name test_${stage}_${concept})
+  add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${stage}/test_${concept}.cpp)
+  target_link_libraries(${name} PRIVATE gjkx::${stage} gjkx_catch_main ${ARG_LINKS})
+  gjkx_warnings(${name})
+  catch_discover_tests(${name} TEST_PREFIX "${stage}/" PROPERTIES LABELS ${stage})
+endfunction()
+
+# Says, at the end of configuration, which chapters a build without the renderer left out.
+function(gjkx_report_skipped)
+  get_property(skipped GLOBAL PROPERTY GJKX_SKIPPED_CHAPTERS)
+  if(skipped)
+    list(JOIN skipped ", " text)
+    message(WARNING "gjkx: no renderer (OSMesa/FreeType/libpng), chapters skipped: ${text}")
+  endif()
+endfunction()

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs everything gjkx needs from Debian's packages. Idempotent: when every
+# package is already installed it only checks (no apt-get update, no download).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libeigen3-dev            # linear algebra
+  libosmesa6-dev           # offscreen OpenGL for the figures
+  libfreetype-dev fonts-dejavu-core   # text labels
+  libpng-dev               # PNG output
+  libqhull-dev             # convex hulls of point sets
+  catch2                   # tests (v2)
+  doxygen graphviz         # docs
+  gnuplot-nox              # plots
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

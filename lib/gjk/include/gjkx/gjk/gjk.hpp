@@ -1,0 +1,266 @@
+/// @file
+/// @brief GJK: the closest distance between two convex sets (§2.2, Fig. 2).
+#pragma once
+
+#include <gjkx/gjk/simplex.hpp>
+#include <gjkx/gjk/trace.hpp>
+#include <gjkx/support_mapping/support.hpp>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+namespace gjkx {
+
+/// How a GJK run ended. Only `Separated` and `Overlapping` are answers about the
+/// distance; the iteration cap and a numerical failure are said as such, never as
+/// "no collision".
+enum class GjkStatus {
+  Separated,         ///< converged: `distance` is the closest distance, within the tolerance
+  SeparatingVector,  ///< boolean query: stopped at the first \f$\vec{s}_i\f$ with \f$SD > \f$ `separationThreshold`
+  Overlapping,       ///< the origin is in \f$V_Q - V_P\f$ (up to round-off): P and Q intersect or touch
+  IterationCap,      ///< `maxIterations` ran out; `distance` is only an upper bound
+  StoppedByVisitor,  ///< the per-iteration visitor asked to stop
+  NumericalFailure,  ///< a support mapping returned a point that is not finite
+};
+
+/// The name of a status, for messages and tables.
+inline const char* toString(GjkStatus status) {
+  switch (status) {
+    case GjkStatus::Separated: return "separated";
+    case GjkStatus::SeparatingVector: return "separating-vector";
+    case GjkStatus::Overlapping: return "overlapping";
+    case GjkStatus::IterationCap: return "iteration-cap";
+    case GjkStatus::StoppedByVisitor: return "stopped-by-visitor";
+    case GjkStatus::NumericalFailure: return "numerical-failure";
+  }
+  return "?";
+}
+
+/// Tolerances and limits of a GJK run.
+template <typename S>
+struct GjkSettings {
+  /// The run ends with `IterationCap` after this many iterations.
+  int maxIterations = 128;
+  /// Convergence: stop when the Minkowski distance (an upper bound of the closest
+  /// distance) and the supporting distance along \f$\vec{s}_i\f$ (a lower bound, §2.3)
+  /// agree within this fraction: \f$MD - SD \le \tau\,MD\f$. Default \f$\epsilon^{3/4}\f$.
+  S relativeTolerance = std::pow(std::numeric_limits<S>::epsilon(), S(0.75));
+  /// Overlap: the origin counts as reached when \f$\lVert z\rVert \le \tau\max_k\lVert w_k\rVert\f$,
+  /// i.e. within round-off of the simplex's own size. Default \f$16\epsilon\f$.
+  S overlapTolerance = S(16) * std::numeric_limits<S>::epsilon();
+  /// Boolean query (§2.3): stop at the first \f$\vec{s}_i\f$ with \f$SD(P,Q,\vec{s}_i)\f$ above this.
+  /// Infinity (the default) computes the closest distance.
+  S separationThreshold = std::numeric_limits<S>::infinity();
+  /// \f$\vec{s}_0\f$ for a cold start: "an arbitrary nonzero vector". Zero (the default)
+  /// takes the direction from P's centre to Q's, which usually saves iterations.
+  Vector3<S> initialDirection = Vector3<S>::Zero();
+};
+
+/// What a GJK run found.
+template <typename S>
+struct GjkResult {
+  /// How the run ended.
+  GjkStatus status = GjkStatus::IterationCap;
+  /// The Minkowski distance \f$\lVert z\rVert\f$ at the end (0 when overlapping): the closest
+  /// distance when `status` is `Separated`, an upper bound of it otherwise.
+  S distance = std::numeric_limits<S>::infinity();
+  /// The largest supporting distance seen, \f$\max_i SD(P,Q,\vec{s}_i)\f$: a lower bound of
+  /// the closest distance; positive means P and Q are proven disjoint.
+  S lowerBound = -std::numeric_limits<S>::infinity();
+  /// The unit \f$\vec{s}_i\f$ that gave `lowerBound`: a separating vector when it is positive.
+  Vector3<S> separatingVector = Vector3<S>::Zero();
+  /// z, the point of \f$V_Q - V_P\f$ closest to the origin (\f$z = q - p\f$).
+  Vector3<S> z = Vector3<S>::Zero();
+  /// The closest point on P (meaningful when `Separated`).
+  Vector3<S> witnessP = Vector3<S>::Zero();
+  /// The closest point on Q (meaningful when `Separated`).
+  Vector3<S> witnessQ = Vector3<S>::Zero();
+  /// The final simplex: the closest features, \f$V_P\f$ and \f$V_Q\f$ (§2.2).
+  Simplex<S> simplex;
+  /// Iterations run (support queries made, warm start included).
+  int iterations = 0;
+};
+
+/// What one query leaves for the next (§2.2, temporal coherence): "the work from the
+/// previous query (e.g. \f$V_P\f$ and \f$V_Q\f$) can be used to reinitialize the current query".
+/// The next run starts along the last direction and re-asks the supports of the last
+/// simplex's directions at the shapes' new poses, starting hill climbing at the last
+/// vertices found.
+template <typename S>
+struct GjkCache {
+  /// The last simplex (with each vertex's direction and hints).
+  Simplex<S> simplex;
+  /// The last search direction.
+  Vector3<S> direction = Vector3<S>::Zero();
+  /// Hill-climbing hint for P.
+  SupportHint hintP = 0;
+  /// Hill-climbing hint for Q.
+  SupportHint hintQ = 0;
+  /// False until a run fills the cache.
+  bool valid = false;
+};
+
+namespace detail {
+template <typename P, typename Q, typename S>
+SimplexVertex<S> supportPair(const P& shapeP, const Q& shapeQ, const Vector3<S>& s, SupportHint& hintP,
+                             SupportHint& hintQ) {
+  SimplexVertex<S> v;
+  v.s = s;
+  v.p = supportFrom(shapeP, s, hintP);
+  v.q = supportFrom(shapeQ, Vector3<S>(-s), hintQ);
+  v.w = v.q - v.p;
+  v.hintP = hintP;
+  v.hintQ = hintQ;
+  return v;
+}
+}  // namespace detail
+
+/// GJK (§2.2): the closest distance between convex sets P and Q, and their closest points.
+///
+/// "Begin GJK with two convex polyhedra P and Q, an arbitrary nonzero vector \f$\vec{s}_0\f$,
+/// and two vertex sets \f$V_P\f$ and \f$V_Q\f$, initially empty. At each iteration i, append
+/// the vertices \f$S_P(\vec{s}_i)\f$ and \f$S_Q(-\vec{s}_i)\f$ to \f$V_P\f$ and \f$V_Q\f$ [...]
+/// Then calculate the feature of the Minkowski sum \f$V_Z = V_Q - V_P\f$ [...] which is closest
+/// to the origin. [...] GJK reiterates with \f$\vec{s}_{i+1}\f$ set to z until this distance no
+/// longer decreases."
+///
+/// Each iteration also measures the supporting distance \f$SD(P,Q,\vec{s}_i)\f$ of §2.3 (a
+/// lower bound of the distance, where the Minkowski distance is an upper bound); their
+/// gap is the convergence test, and with `settings.separationThreshold` the run stops at
+/// the first separating vector (the boolean query).
+///
+/// @param P, Q      support mappings (any types with `support(s)` and `center()`)
+/// @param settings  tolerances, iteration cap, optional separation threshold
+/// @param cache     optional warm start: read if valid, written at the end
+/// @param visit     optional per-iteration visitor `bool(const GjkIteration<S>&)`; returning
+///                  false stops the run (`StoppedByVisitor`). A `GjkTrace` keeps every iteration.
+template <typename ShapeP, typename ShapeQ, typename Visitor = NoGjkVisitor>
+GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
+                                       const GjkSettings<typename ShapeP::Scalar>& settings = {},
+                                       GjkCache<typename ShapeP::Scalar>* cache = nullptr, Visitor&& visit = {}) {
+  using S = typename ShapeP::Scalar;
+  static_assert(std::is_same_v<S, typename ShapeQ::Scalar>, "P and Q must use the same scalar type");
+  constexpr bool visiting = !std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>;
+
+  GjkResult<S> result;
+  Simplex<S>& simplex = result.simplex;
+  SupportHint hintP = 0, hintQ = 0;
+  Vector3<S> s;                 // s_i
+  bool warmSimplexPending = false;
+  if (cache && cache->valid) {  // temporal coherence: start where the last query ended
+    s = cache->direction;
+    hintP = cache->hintP;
+    hintQ = cache->hintQ;
+    warmSimplexPending = cache->simplex.size > 0;
+  } else if (settings.initialDirection.squaredNorm() > S(0)) {
+    s = settings.initialDirection;
+  } else {
+    s = Q.center() - P.center();  // s_0: from P towards Q
+  }
+  if (!(s.squaredNorm() > S(0)) || !s.allFinite()) s = Vector3<S>::UnitX();  // any nonzero vector will do
+
+  S md = std::numeric_limits<S>::infinity();  // Minkowski distance |z| of the current simplex
+  Vector3<S> z = Vector3<S>::Zero();
+
+  auto finish = [&](GjkStatus status) {
+    result.status = status;
+    result.z = z;
+    result.distance = status == GjkStatus::Overlapping ? S(0) : md;
+    result.witnessP = simplex.witnessP();
+    result.witnessQ = simplex.witnessQ();
+    if (cache && status != GjkStatus::NumericalFailure) {
+      cache->simplex = simplex;
+      cache->direction = s;
+      cache->hintP = hintP;
+      cache->hintQ = hintQ;
+      cache->valid = true;
+    }
+    return result;
+  };
+
+  for (int i = 0; i < settings.maxIterations; ++i) {
+    result.iterations = i + 1;
+    const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
+    if (!v.w.allFinite()) return finish(GjkStatus::NumericalFailure);
+
+    // SD(P, Q, s_i) = s_i . S_Q(-s_i) - s_i . S_P(s_i), for a unit s_i (§2.3).
+    const S sNorm = s.norm();
+    const S sd = s.dot(v.w) / sNorm;
+    if (sd > result.lowerBound) {
+      result.lowerBound = sd;
+      result.separatingVector = s / sNorm;
+    }
+
+    GjkStep step = GjkStep::Continue;
+    if (sd > settings.separationThreshold) {
+      step = GjkStep::SeparatingVector;  // a boolean query can stop at the first separating vector
+    } else {
+      if (warmSimplexPending) {  // re-ask the last simplex's supports at the new poses
+        warmSimplexPending = false;
+        for (int k = 0; k < cache->simplex.size; ++k) {
+          SimplexVertex<S> old = cache->simplex.vertices[k];
+          SupportHint hp = old.hintP, hq = old.hintQ;
+          const SimplexVertex<S> again = detail::supportPair(P, Q, old.s, hp, hq);
+          if (again.w.allFinite()) simplex.push(again);
+        }
+        if (simplex.size > 0) {
+          reduceToClosestFeature(simplex);
+          z = simplex.closestPoint();
+          md = z.norm();
+        }
+      }
+      bool duplicate = false;
+      for (int k = 0; k < simplex.size; ++k) duplicate = duplicate || simplex.vertices[k].w == v.w;
+      // The gap between the upper bound MD and the lower bound SD(s_i) closes: z is the
+      // closest point within the tolerance, and w would not move it.
+      if (simplex.size > 0 && (duplicate || md - sd <= settings.relativeTolerance * md)) {
+        step = GjkStep::Converged;
+      } else {
+        const Simplex<S> before = simplex;
+        simplex.push(v);
+        reduceToClosestFeature(simplex);
+        const Vector3<S> zNew = simplex.closestPoint();
+        const S mdNew = zNew.norm();
+        S wMax = S(0);
+        for (int k = 0; k < simplex.size; ++k) wMax = std::max(wMax, simplex.vertices[k].w.norm());
+        if (simplex.size == 4 || mdNew <= settings.overlapTolerance * wMax) {
+          z = zNew;
+          md = S(0);
+          step = GjkStep::Overlap;
+        } else if (!(mdNew < md)) {
+          simplex = before;  // "until this distance no longer decreases": keep the better simplex
+          step = GjkStep::Converged;
+        } else {
+          z = zNew;
+          md = mdNew;
+        }
+      }
+    }
+
+    if constexpr (visiting) {
+      GjkIteration<S> record;
+      record.i = i;
+      record.s = s;
+      record.supportP = v.p;
+      record.supportQ = v.q;
+      record.supportingDistance = sd;
+      record.simplex = simplex;
+      record.z = z;
+      record.minkowskiDistance = md;
+      record.step = step;
+      if (!visit(record) && step == GjkStep::Continue) return finish(GjkStatus::StoppedByVisitor);
+    }
+    switch (step) {
+      case GjkStep::SeparatingVector: return finish(GjkStatus::SeparatingVector);
+      case GjkStep::Converged: return finish(GjkStatus::Separated);
+      case GjkStep::Overlap: return finish(GjkStatus::Overlapping);
+      case GjkStep::Continue: break;
+    }
+    s = z;  // s_{i+1} = z
+  }
+  return finish(GjkStatus::IterationCap);
+}
+
+}  // namespace gjkx

@@ -1,0 +1,188 @@
+/// @file
+/// @brief Rigid motions `pose(t)`: how P(t) and Q(t) move over a time interval (§3, §5).
+///
+/// The extrusion test of §3 and the time-of-impact solver of §5 see a moving body
+/// only through its pose at a time t. Each motion here answers `pose(t)`; a static
+/// body does no work at all, and a translating body does no rotation work.
+#pragma once
+
+#include <gjkx/motion/pose.hpp>
+
+#include <variant>
+
+namespace gjkx {
+
+/// A body that does not move: `pose(t)` is the same for every t.
+template <typename Scalar>
+struct StaticMotion {
+  /// The pose at every time.
+  Pose<Scalar> start;
+  /// The pose at time t (always `start`).
+  const Pose<Scalar>& pose(Scalar /*t*/) const { return start; }
+};
+
+/// Constant linear velocity, no rotation: \f$p(t) = p_0 + v\,(t - t_0)\f$ ("linear motion", §3).
+template <typename Scalar>
+struct ConstantVelocity {
+  /// The pose at time t0.
+  Pose<Scalar> start;
+  /// Velocity of the body origin, in world units per unit time.
+  Vector3<Scalar> velocity = Vector3<Scalar>::Zero();
+  /// The time at which the body is at `start`.
+  Scalar t0 = Scalar(0);
+  /// The pose at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    Pose<Scalar> p = start;
+    p.translation += velocity * (t - t0);
+    return p;
+  }
+};
+
+/// Constant acceleration, no rotation (ballistic flight): \f$p(t) = p_0 + v\,\tau + \tfrac12 a\,\tau^2\f$, \f$\tau = t - t_0\f$.
+/// A second-order motion in the sense of §3.
+template <typename Scalar>
+struct ConstantAcceleration {
+  /// The pose at time t0.
+  Pose<Scalar> start;
+  /// Velocity of the body origin at t0.
+  Vector3<Scalar> velocity = Vector3<Scalar>::Zero();
+  /// Constant acceleration of the body origin (gravity, say).
+  Vector3<Scalar> acceleration = Vector3<Scalar>::Zero();
+  /// The time at which the body is at `start`.
+  Scalar t0 = Scalar(0);
+  /// The pose at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    const Scalar tau = t - t0;
+    Pose<Scalar> p = start;
+    p.translation += velocity * tau + acceleration * (Scalar(0.5) * tau * tau);
+    return p;
+  }
+};
+
+/// Screw motion: constant linear velocity of the body origin and constant angular
+/// velocity about it, \f$R(t) = \exp([\omega]\,\tau)\,R_0\f$, \f$p(t) = p_0 + v\,\tau\f$.
+/// Rotation makes the motion second order (§3).
+template <typename Scalar>
+struct ScrewMotion {
+  /// The pose at time t0.
+  Pose<Scalar> start;
+  /// Velocity of the body origin.
+  Vector3<Scalar> velocity = Vector3<Scalar>::Zero();
+  /// Angular velocity in the world frame (radians per unit time) about the body origin.
+  Vector3<Scalar> angularVelocity = Vector3<Scalar>::Zero();
+  /// The time at which the body is at `start`.
+  Scalar t0 = Scalar(0);
+  /// The pose at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    const Scalar tau = t - t0;
+    Pose<Scalar> p = start;
+    const Scalar speed = angularVelocity.norm();
+    if (speed > Scalar(0)) {
+      p.rotation = Eigen::AngleAxis<Scalar>(speed * tau, angularVelocity / speed).toRotationMatrix() * start.rotation;
+    }
+    p.translation += velocity * tau;
+    return p;
+  }
+};
+
+/// Interpolation between two poses over [t0, t1]: the translation moves on a line and
+/// the rotation turns at constant rate along the shortest arc (quaternion slerp).
+/// Outside [t0, t1] the pose is held at the nearest end.
+template <typename Scalar>
+struct PoseInterpolation {
+  /// The pose at t0.
+  Pose<Scalar> from;
+  /// The pose at t1.
+  Pose<Scalar> to;
+  /// Start of the interval.
+  Scalar t0 = Scalar(0);
+  /// End of the interval (t1 > t0).
+  Scalar t1 = Scalar(1);
+  /// The pose at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    Scalar u = (t - t0) / (t1 - t0);
+    u = u < Scalar(0) ? Scalar(0) : (u > Scalar(1) ? Scalar(1) : u);
+    const Eigen::Quaternion<Scalar> q0(from.rotation), q1(to.rotation);
+    Pose<Scalar> p;
+    p.rotation = q0.slerp(u, q1).toRotationMatrix();
+    p.translation = from.translation + u * (to.translation - from.translation);
+    return p;
+  }
+};
+
+/// Checks a time interval [t0, t1]: both finite and t1 >= t0 (the message names the field).
+template <typename Scalar>
+void requireInterval(Scalar t0, Scalar t1, const std::string& field) {
+  requireFinite(t0, field + ".t0");
+  requireFinite(t1, field + ".t1");
+  if (t1 < t0) failInput(field + ".t1", "must not be before t0");
+}
+
+/// Any of the rigid motions above, behind one `pose(t)`.
+///
+/// Build one through the named constructors, which validate their input and throw
+/// std::invalid_argument naming the field that was wrong.
+template <typename Scalar>
+class Motion {
+ public:
+  /// The alternatives.
+  using Variant = std::variant<StaticMotion<Scalar>, ConstantVelocity<Scalar>, ConstantAcceleration<Scalar>,
+                               ScrewMotion<Scalar>, PoseInterpolation<Scalar>>;
+
+  /// A body at rest at the identity pose.
+  Motion() : motion_(StaticMotion<Scalar>{}) {}
+
+  /// A body at rest at `pose`.
+  static Motion fixed(const Pose<Scalar>& pose) {
+    pose.validate("motion.start");
+    return Motion(StaticMotion<Scalar>{pose});
+  }
+  /// Constant velocity from `start` at time t0.
+  static Motion constantVelocity(const Pose<Scalar>& start, const Vector3<Scalar>& velocity, Scalar t0 = 0) {
+    start.validate("motion.start");
+    requireFinite(velocity, "motion.velocity");
+    requireFinite(t0, "motion.t0");
+    return Motion(ConstantVelocity<Scalar>{start, velocity, t0});
+  }
+  /// Constant acceleration (ballistic) from `start` at time t0.
+  static Motion constantAcceleration(const Pose<Scalar>& start, const Vector3<Scalar>& velocity,
+                                     const Vector3<Scalar>& acceleration, Scalar t0 = 0) {
+    start.validate("motion.start");
+    requireFinite(velocity, "motion.velocity");
+    requireFinite(acceleration, "motion.acceleration");
+    requireFinite(t0, "motion.t0");
+    return Motion(ConstantAcceleration<Scalar>{start, velocity, acceleration, t0});
+  }
+  /// Screw motion (constant linear and angular velocity) from `start` at time t0.
+  static Motion screw(const Pose<Scalar>& start, const Vector3<Scalar>& velocity,
+                      const Vector3<Scalar>& angularVelocity, Scalar t0 = 0) {
+    start.validate("motion.start");
+    requireFinite(velocity, "motion.velocity");
+    requireFinite(angularVelocity, "motion.angularVelocity");
+    requireFinite(t0, "motion.t0");
+    return Motion(ScrewMotion<Scalar>{start, velocity, angularVelocity, t0});
+  }
+  /// Interpolation from `from` at t0 to `to` at t1.
+  static Motion interpolate(const Pose<Scalar>& from, const Pose<Scalar>& to, Scalar t0 = 0, Scalar t1 = 1) {
+    from.validate("motion.from");
+    to.validate("motion.to");
+    requireInterval(t0, t1, "motion");
+    if (t1 == t0) failInput("motion.t1", "must be after t0 for an interpolation");
+    return Motion(PoseInterpolation<Scalar>{from, to, t0, t1});
+  }
+
+  /// The pose `worldFromBody` at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    return std::visit([t](const auto& m) { return Pose<Scalar>(m.pose(t)); }, motion_);
+  }
+  /// True for a body that never moves (lets a scene skip its work).
+  bool isStatic() const { return std::holds_alternative<StaticMotion<Scalar>>(motion_); }
+  /// The alternative held, for code that wants to dispatch on it.
+  const Variant& variant() const { return motion_; }
+
+ private:
+  explicit Motion(Variant motion) : motion_(std::move(motion)) {}
+  Variant motion_;
+};
+
+}  // namespace gjkx

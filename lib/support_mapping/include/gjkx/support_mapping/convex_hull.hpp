@@ -1,0 +1,42 @@
+/// @file
+/// @brief The convex hull of a point set, through Qhull: the data a polytope's hill climbing needs (§2.1).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <vector>
+
+namespace gjkx {
+
+/// A convex hull: its vertices, its triangulated boundary and which vertices share an edge.
+struct ConvexHull {
+  /// Hull vertices (a subset of the input points, in input order).
+  std::vector<Eigen::Vector3d> vertices;
+  /// For each hull vertex, the index of the input point it came from.
+  std::vector<int> inputIndex;
+  /// Boundary triangles (indices into `vertices`), counter-clockwise seen from outside.
+  /// For a planar hull: the polygon fanned into triangles, facing +z.
+  std::vector<std::array<int, 3>> triangles;
+  /// Vertex adjacency in compressed rows: the neighbours of vertex v are
+  /// `neighbours[firstNeighbour[v] .. firstNeighbour[v + 1])`.
+  std::vector<int> firstNeighbour;
+  /// See `firstNeighbour`.
+  std::vector<int> neighbours;
+  /// True for a convex polygon in the plane z = 0 (a 2D figure's shape).
+  bool planar = false;
+};
+
+/// The convex hull of a solid point set (Qhull). Throws std::invalid_argument naming
+/// `field` if a point is not finite, there are fewer than 4 points, or all points lie
+/// in one plane (no volume).
+ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* field = "polytope.points");
+
+/// The convex hull of points in the plane z = 0 (Qhull in 2D), a convex polygon whose
+/// vertices are in counter-clockwise order, each adjacent to the next. Throws
+/// std::invalid_argument naming `field` if a point is not finite or has z != 0, there
+/// are fewer than 3 points, or all points lie on one line.
+ConvexHull convexHull2d(const std::vector<Eigen::Vector3d>& points, const char* field = "polygon.points");
+
+}  // namespace gjkx

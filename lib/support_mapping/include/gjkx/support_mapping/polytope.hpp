@@ -1,0 +1,145 @@
+/// @file
+/// @brief The convex polytope and its supporting vertex by hill climbing (§2.1).
+#pragma once
+
+#include <gjkx/support_mapping/convex_hull.hpp>
+#include <gjkx/support_mapping/support.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace gjkx {
+
+/// A convex polytope X, the convex hull of a point set, with the adjacency of its vertices.
+///
+/// §2.1: "\f$S_X(\vec{s}) \in \mathrm{vert}(X)\f$ where \f$\vec{s}\cdot S_X(\vec{s}) =
+/// \max\{\vec{s}\cdot x : x \in \mathrm{vert}(X)\}\f$ [...] It can be found efficiently with a
+/// technique called *hill climbing*, which uses adjacency information of each vertex
+/// to search for a local (and also global) maximum." On a convex polytope a vertex
+/// that no neighbour beats along s is a global maximum, so the climb is exact. Started
+/// from the vertex found by the previous query (the hint), it costs a few dot products
+/// when the direction changed little: GJK's temporal coherence.
+///
+/// Copies are cheap: the vertex data is shared and never changes.
+template <typename S>
+class Polytope {
+ public:
+  /// The scalar type.
+  using Scalar = S;
+
+  /// The convex hull of a solid point set (Qhull). Throws std::invalid_argument
+  /// ("polytope.points: ...") for a non-finite point, fewer than 4 points, or a flat set.
+  static Polytope hull(const std::vector<Vector3<S>>& points) {
+    return Polytope(convexHull3d(toDouble(points), "polytope.points"));
+  }
+
+  /// The convex polygon spanned by points in the plane z = 0, for the paper's 2D
+  /// figures (a 2D set is a 3D set in the plane z = 0). Throws std::invalid_argument
+  /// ("polygon.points: ...") for a non-finite point, z != 0, fewer than 3 points or a line.
+  static Polytope polygon(const std::vector<Vector3<S>>& points) {
+    return Polytope(convexHull2d(toDouble(points), "polygon.points"));
+  }
+
+  /// \f$S_X(\vec{s})\f$ by hill climbing from vertex 0.
+  Vector3<S> support(const Vector3<S>& s) const {
+    SupportHint hint = 0;
+    return support(s, hint);
+  }
+
+  /// \f$S_X(\vec{s})\f$ by hill climbing from `hint`; on return `hint` is the vertex found.
+  /// Steepest ascent: move to the best neighbour while it is strictly better along s.
+  Vector3<S> support(const Vector3<S>& s, SupportHint& hint) const {
+    hint = climb(s, hint, nullptr);
+    return data_->vertices[hint];
+  }
+
+  /// The hill-climbing path from `hint` to the supporting vertex, vertex by vertex
+  /// (drawn by chapter 01).
+  std::vector<int> climbPath(const Vector3<S>& s, SupportHint hint) const {
+    std::vector<int> path;
+    climb(s, hint, &path);
+    return path;
+  }
+
+  /// \f$S_X(\vec{s})\f$ by looking at every vertex: the reference the tests hold hill climbing to.
+  int supportIndexLinearScan(const Vector3<S>& s) const {
+    int best = 0;
+    for (int v = 1; v < vertexCount(); ++v)
+      if (s.dot(data_->vertices[v]) > s.dot(data_->vertices[best])) best = v;
+    return best;
+  }
+
+  /// The centroid of the vertices (a point inside).
+  Vector3<S> center() const { return data_->centroid; }
+  /// The number of hull vertices.
+  int vertexCount() const { return static_cast<int>(data_->vertices.size()); }
+  /// Hull vertex v.
+  const Vector3<S>& vertex(int v) const { return data_->vertices[v]; }
+  /// All hull vertices.
+  const std::vector<Vector3<S>>& vertices() const { return data_->vertices; }
+  /// The boundary triangles (counter-clockwise seen from outside; for a polygon, a fan facing +z).
+  const std::vector<std::array<int, 3>>& triangles() const { return data_->triangles; }
+  /// The vertices that share an edge with v.
+  std::vector<int> neighbours(int v) const {
+    return std::vector<int>(data_->neighbours.begin() + data_->firstNeighbour[v],
+                            data_->neighbours.begin() + data_->firstNeighbour[v + 1]);
+  }
+  /// True for a polygon in the plane z = 0.
+  bool planar() const { return data_->planar; }
+
+ private:
+  struct Data {
+    std::vector<Vector3<S>> vertices;
+    std::vector<int> firstNeighbour, neighbours;
+    std::vector<std::array<int, 3>> triangles;
+    Vector3<S> centroid;
+    bool planar;
+  };
+
+  explicit Polytope(const ConvexHull& hull) {
+    auto data = std::make_shared<Data>();
+    data->centroid = Vector3<S>::Zero();
+    for (const auto& v : hull.vertices) {
+      data->vertices.push_back(v.cast<S>());
+      data->centroid += data->vertices.back();
+    }
+    data->centroid /= S(hull.vertices.size());
+    data->firstNeighbour = hull.firstNeighbour;
+    data->neighbours = hull.neighbours;
+    data->triangles = hull.triangles;
+    data->planar = hull.planar;
+    data_ = std::move(data);
+  }
+
+  static std::vector<Eigen::Vector3d> toDouble(const std::vector<Vector3<S>>& points) {
+    std::vector<Eigen::Vector3d> out;
+    out.reserve(points.size());
+    for (const auto& p : points) out.push_back(p.template cast<double>());
+    return out;
+  }
+
+  int climb(const Vector3<S>& s, int start, std::vector<int>* path) const {
+    const Data& d = *data_;
+    int v = (start >= 0 && start < vertexCount()) ? start : 0;
+    S best = s.dot(d.vertices[v]);
+    if (path) path->push_back(v);
+    for (;;) {
+      int next = v;
+      for (int k = d.firstNeighbour[v]; k < d.firstNeighbour[v + 1]; ++k) {
+        const int n = d.neighbours[k];
+        const S value = s.dot(d.vertices[n]);
+        if (value > best) {
+          best = value;
+          next = n;
+        }
+      }
+      if (next == v) return v;  // no neighbour is better: a local, hence global, maximum
+      v = next;
+      if (path) path->push_back(v);
+    }
+  }
+
+  std::shared_ptr<const Data> data_;
+};
+
+}  // namespace gjkx

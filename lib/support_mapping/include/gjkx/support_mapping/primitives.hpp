@@ -1,0 +1,140 @@
+/// @file
+/// @brief Support mappings of the simple shapes: point, segment, triangle, box, sphere, capsule (§2.1).
+///
+/// Each shape is given in its own body frame; `Placed` puts it at a pose. The support
+/// mapping of each is a one-line formula, derived above it. Ties (a face or an edge
+/// facing s exactly) are broken the same way every time, so results are reproducible.
+#pragma once
+
+#include <gjkx/support_mapping/support.hpp>
+
+namespace gjkx {
+
+/// A single point \f$\{a\}\f$: \f$S(\vec{s}) = a\f$ for every s.
+template <typename S>
+struct Point {
+  /// The scalar type.
+  using Scalar = S;
+  /// The point, in the body frame.
+  Vector3<S> a = Vector3<S>::Zero();
+  /// A point at `a` (checked finite).
+  explicit Point(const Vector3<S>& a_ = Vector3<S>::Zero()) : a(a_) { requireFinite(a, "point.a"); }
+  /// \f$S(\vec{s}) = a\f$.
+  Vector3<S> support(const Vector3<S>& /*s*/) const { return a; }
+  /// The point itself.
+  Vector3<S> center() const { return a; }
+};
+
+/// The segment \f$[a, b]\f$: the end farther along s, \f$S(\vec{s}) = \vec{s}\cdot a \ge \vec{s}\cdot b\ ?\ a : b\f$.
+template <typename S>
+struct Segment {
+  /// The scalar type.
+  using Scalar = S;
+  /// First end.
+  Vector3<S> a;
+  /// Second end.
+  Vector3<S> b;
+  /// The segment from `a` to `b` (ends checked finite; a = b is allowed and is a point).
+  Segment(const Vector3<S>& a_, const Vector3<S>& b_) : a(a_), b(b_) {
+    requireFinite(a, "segment.a");
+    requireFinite(b, "segment.b");
+  }
+  /// The end farther along s (a on a tie).
+  Vector3<S> support(const Vector3<S>& s) const { return s.dot(b) > s.dot(a) ? b : a; }
+  /// The midpoint.
+  Vector3<S> center() const { return (a + b) * S(0.5); }
+};
+
+/// The triangle with vertices a, b, c: the vertex with the largest \f$\vec{s}\cdot x\f$.
+template <typename S>
+struct Triangle {
+  /// The scalar type.
+  using Scalar = S;
+  /// First vertex.
+  Vector3<S> a;
+  /// Second vertex.
+  Vector3<S> b;
+  /// Third vertex.
+  Vector3<S> c;
+  /// The triangle abc (vertices checked finite; a degenerate triangle is allowed).
+  Triangle(const Vector3<S>& a_, const Vector3<S>& b_, const Vector3<S>& c_) : a(a_), b(b_), c(c_) {
+    requireFinite(a, "triangle.a");
+    requireFinite(b, "triangle.b");
+    requireFinite(c, "triangle.c");
+  }
+  /// The vertex farthest along s (the first on a tie).
+  Vector3<S> support(const Vector3<S>& s) const {
+    const S da = s.dot(a), db = s.dot(b), dc = s.dot(c);
+    if (db > da) return dc > db ? c : b;
+    return dc > da ? c : a;
+  }
+  /// The centroid.
+  Vector3<S> center() const { return (a + b + c) / S(3); }
+};
+
+/// The box \f$[-h_x,h_x]\times[-h_y,h_y]\times[-h_z,h_z]\f$ centred on the body origin:
+/// each coordinate of the support is \f$\pm h\f$ by the sign of s, \f$S(\vec{s})_k = \operatorname{sign}(s_k)\,h_k\f$.
+template <typename S>
+struct Box {
+  /// The scalar type.
+  using Scalar = S;
+  /// Half the side lengths.
+  Vector3<S> halfExtents;
+  /// A box with the given half extents (each finite and not negative).
+  explicit Box(const Vector3<S>& halfExtents_) : halfExtents(halfExtents_) {
+    for (int k = 0; k < 3; ++k) requireNonNegative(halfExtents[k], "box.halfExtents[" + std::to_string(k) + "]");
+  }
+  /// The corner in the octant of s (+h on a zero component).
+  Vector3<S> support(const Vector3<S>& s) const {
+    return Vector3<S>(s.x() < S(0) ? -halfExtents.x() : halfExtents.x(),
+                      s.y() < S(0) ? -halfExtents.y() : halfExtents.y(),
+                      s.z() < S(0) ? -halfExtents.z() : halfExtents.z());
+  }
+  /// The body origin.
+  Vector3<S> center() const { return Vector3<S>::Zero(); }
+};
+
+/// The ball of radius r about the body origin: \f$S(\vec{s}) = r\,\vec{s}/\lVert\vec{s}\rVert\f$.
+template <typename S>
+struct Sphere {
+  /// The scalar type.
+  using Scalar = S;
+  /// The radius.
+  S radius;
+  /// A sphere of radius r (finite, not negative).
+  explicit Sphere(S r) : radius(r) { requireNonNegative(radius, "sphere.radius"); }
+  /// The point of the sphere in the direction s (the centre for s = 0).
+  Vector3<S> support(const Vector3<S>& s) const {
+    const S n = s.norm();
+    return n > S(0) ? Vector3<S>(s * (radius / n)) : Vector3<S>::Zero();
+  }
+  /// The body origin.
+  Vector3<S> center() const { return Vector3<S>::Zero(); }
+};
+
+/// The capsule: all points within r of the segment [a, b]. Its support is the
+/// segment's support plus the sphere's, \f$S(\vec{s}) = S_{[a,b]}(\vec{s}) + r\,\vec{s}/\lVert\vec{s}\rVert\f$
+/// (the support mapping of a Minkowski sum is the sum of the support mappings).
+template <typename S>
+struct Capsule {
+  /// The scalar type.
+  using Scalar = S;
+  /// The axis segment.
+  Segment<S> axis;
+  /// The radius.
+  S radius;
+  /// A capsule about the segment [a, b] of radius r (finite, not negative).
+  Capsule(const Vector3<S>& a, const Vector3<S>& b, S r) : axis(a, b), radius(r) {
+    requireNonNegative(radius, "capsule.radius");
+  }
+  /// The axis support plus the ball's.
+  Vector3<S> support(const Vector3<S>& s) const {
+    const S n = s.norm();
+    const Vector3<S> end = axis.support(s);
+    return n > S(0) ? Vector3<S>(end + s * (radius / n)) : end;
+  }
+  /// The midpoint of the axis.
+  Vector3<S> center() const { return axis.center(); }
+};
+
+}  // namespace gjkx

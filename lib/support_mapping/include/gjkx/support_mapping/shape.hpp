@@ -1,0 +1,46 @@
+/// @file
+/// @brief `Shape`: any of the shapes of §2.1 behind one support mapping, chosen at run time.
+#pragma once
+
+#include <gjkx/support_mapping/polytope.hpp>
+#include <gjkx/support_mapping/primitives.hpp>
+
+#include <variant>
+
+namespace gjkx {
+
+/// Any of the shapes of this stage. GJK is a template over support mappings, so a
+/// scene that knows its shapes pays nothing; a scene that decides at run time uses
+/// this, at the cost of one switch per support query.
+template <typename S>
+class Shape {
+ public:
+  /// The scalar type.
+  using Scalar = S;
+  /// The alternatives.
+  using Variant = std::variant<Point<S>, Segment<S>, Triangle<S>, Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
+
+  /// Any alternative converts to a Shape.
+  template <typename X, typename = std::enable_if_t<std::is_constructible_v<Variant, X>>>
+  Shape(X x) : shape_(std::move(x)) {}  // NOLINT: implicit on purpose
+
+  /// \f$S_X(\vec{s})\f$.
+  Vector3<S> support(const Vector3<S>& s) const {
+    return std::visit([&](const auto& x) { return Vector3<S>(x.support(s)); }, shape_);
+  }
+  /// \f$S_X(\vec{s})\f$ with a warm-start hint (used by the polytope).
+  Vector3<S> support(const Vector3<S>& s, SupportHint& hint) const {
+    return std::visit([&](const auto& x) { return Vector3<S>(supportFrom(x, s, hint)); }, shape_);
+  }
+  /// A point inside.
+  Vector3<S> center() const {
+    return std::visit([](const auto& x) { return Vector3<S>(x.center()); }, shape_);
+  }
+  /// The alternative held.
+  const Variant& variant() const { return shape_; }
+
+ private:
+  Variant shape_;
+};
+
+}  // namespace gjkx
