@@ -11,7 +11,7 @@ packages=(
   libpng-dev               # PNG output
   libqhull-dev             # convex hulls of point sets
   catch2                   # tests (v2)
-  doxygen graphviz         # docs
+  doxygen graphviz libjs-mathjax   # docs (MathJax so formulas read offline)
   gnuplot-nox              # plots
 )
 

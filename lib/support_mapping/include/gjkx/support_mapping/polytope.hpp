@@ -63,9 +63,18 @@ class Polytope {
 
   /// \f$S_X(\vec{s})\f$ by looking at every vertex: the reference the tests hold hill climbing to.
   int supportIndexLinearScan(const Vector3<S>& s) const {
+    // Fix (tests): s·x measured from vertex 0, as in climb() below, so that the reference
+    // keeps its accuracy for a polytope far from the origin.
+    const Vector3<S>& origin = data_->vertices[0];
     int best = 0;
-    for (int v = 1; v < vertexCount(); ++v)
-      if (s.dot(data_->vertices[v]) > s.dot(data_->vertices[best])) best = v;
+    S bestValue = S(0);
+    for (int v = 1; v < vertexCount(); ++v) {
+      const S value = s.dot(data_->vertices[v] - origin);
+      if (value > bestValue) {
+        bestValue = value;
+        best = v;
+      }
+    }
     return best;
   }
 
@@ -121,13 +130,21 @@ class Polytope {
   int climb(const Vector3<S>& s, int start, std::vector<int>* path) const {
     const Data& d = *data_;
     int v = (start >= 0 && start < vertexCount()) ? start : 0;
-    S best = s.dot(d.vertices[v]);
+    // Fix (tests): compare s·(x - x_start), not s·x. For a polytope far from the origin
+    // (coordinates near 10^5 in float) s·x rounds to a grid coarser than the gain of an
+    // uphill edge, the neighbour then ties and the climb stopped far below the top
+    // (shortfalls of nearly the polytope's diameter were seen). The difference of two nearby
+    // vertices is exact, so the values keep the precision of the polytope's size; and
+    // measured from one fixed vertex, each vertex has one value, so the climb still
+    // rises strictly and always ends.
+    const Vector3<S> origin = d.vertices[v];
+    S best = S(0);
     if (path) path->push_back(v);
     for (;;) {
       int next = v;
       for (int k = d.firstNeighbour[v]; k < d.firstNeighbour[v + 1]; ++k) {
         const int n = d.neighbours[k];
-        const S value = s.dot(d.vertices[n]);
+        const S value = s.dot(d.vertices[n] - origin);
         if (value > best) {
           best = value;
           next = n;

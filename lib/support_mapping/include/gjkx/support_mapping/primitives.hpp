@@ -124,7 +124,7 @@ struct Capsule {
   /// The radius.
   S radius;
   /// A capsule about the segment [a, b] of radius r (finite, not negative).
-  Capsule(const Vector3<S>& a, const Vector3<S>& b, S r) : axis(a, b), radius(r) {
+  Capsule(const Vector3<S>& a, const Vector3<S>& b, S r) : axis(checked(a, "capsule.a"), checked(b, "capsule.b")), radius(r) {
     requireNonNegative(radius, "capsule.radius");
   }
   /// The axis support plus the ball's.
@@ -135,6 +135,12 @@ struct Capsule {
   }
   /// The midpoint of the axis.
   Vector3<S> center() const { return axis.center(); }
+
+ private:
+  static const Vector3<S>& checked(const Vector3<S>& end, const char* field) {
+    requireFinite(end, field);
+    return end;
+  }
 };
 
 }  // namespace gjkx
