@@ -1,0 +1,184 @@
+// Chapter 01: support mappings (§2.1).
+//
+// "For a convex polyhedron X and a vector s, assume there exists a routine S_X(s) that
+// returns the supporting vertex of X in the direction s." Every shape of the library
+// is such a routine. This chapter draws two figures:
+//   support-mapping-shapes.png:        the supporting vertex of six shapes in three
+//                                      directions, with the supporting plane there;
+//   support-mapping-hill-climbing.png: hill climbing on a polytope of 300 vertices,
+//                                      from a cold start and from a warm-start hint.
+// A curved shape is drawn from its support mapping alone: the hull of its support
+// points over many directions.
+#include "../chapter.hpp"
+
+#include <gjkx/render/canvas.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/support_mapping/shape.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+using namespace gjkx;
+using namespace gjkx::render;
+using V = Vector3<double>;
+
+namespace {
+
+// n directions spread evenly over the unit sphere (a Fibonacci lattice).
+std::vector<V> sphereDirections(int n) {
+  std::vector<V> dirs;
+  const double golden = M_PI * (3 - std::sqrt(5.0));
+  for (int k = 0; k < n; ++k) {
+    const double z = 1 - 2 * (k + 0.5) / n, r = std::sqrt(1 - z * z);
+    dirs.emplace_back(r * std::cos(golden * k), r * std::sin(golden * k), z);
+  }
+  return dirs;
+}
+
+// The mesh of a solid convex shape, from nothing but its support mapping.
+template <typename X>
+Mesh meshFromSupport(const X& shape, int directions = 600) {
+  std::vector<V> points;
+  for (const V& s : sphereDirections(directions)) points.push_back(shape.support(s));
+  const auto hull = Polytope<double>::hull(points);
+  return Mesh{hull.vertices(), hull.triangles()};
+}
+
+Mesh meshOf(const Polytope<double>& polytope) { return Mesh{polytope.vertices(), polytope.triangles()}; }
+
+// A small square of the supporting plane through x, normal to s.
+std::vector<Eigen::Vector3d> planePatch(const V& x, const V& s, double half) {
+  const V n = s.normalized();
+  const V u = n.unitOrthogonal(), v = n.cross(u);
+  return {x + half * (u + v), x + half * (v - u), x - half * (u + v), x + half * (u - v)};
+}
+
+// Three directions across the camera's view (right, up, down-left), so none is foreshortened.
+const std::vector<V> kDirections = {V(-0.2, 1, 0.15), V(-0.45, -0.05, 0.9), V(0.7, -0.75, -0.5)};
+const Color kDirectionColors[3] = {palette::direction, palette::highlight, palette::trajectory};
+
+template <typename X>
+void drawSupports(Canvas& canvas, const X& shape) {
+  for (int k = 0; k < 3; ++k) {
+    const V s = kDirections[k].normalized();
+    const V x = shape.support(s);
+    canvas.polygon3(planePatch(x, s, 0.45), ShapeStyle{kDirectionColors[k].withAlpha(0.18), Stroke{kDirectionColors[k], 1.0}});
+    canvas.arrow3(shape.center(), shape.center() + 1.9 * s, Stroke{kDirectionColors[k], style::lineThin});
+    canvas.text3(shape.center() + 1.9 * s, "s_" + std::to_string(k + 1),
+                 TextStyle{Font::Math, style::labelSize, kDirectionColors[k]}, Anchor::AboveRight);
+    canvas.point3(x, kDirectionColors[k], 5, Stroke{palette::ink, 1.0});
+  }
+}
+
+void shapesFigure(const std::string& out) {
+  const Segment<double> segment(V(0.3, -1.1, -0.5), V(-0.3, 1.1, 0.5));
+  const Triangle<double> triangle(V(-1, -0.8, 0), V(1.1, -0.3, 0.2), V(-0.2, 1, -0.2));
+  const Box<double> box(V(0.9, 0.6, 0.5));
+  const Sphere<double> sphere(0.9);
+  const Capsule<double> capsule(V(-0.7, 0, -0.3), V(0.7, 0, 0.3), 0.45);
+  std::mt19937 rng(1);
+  std::normal_distribution<double> gauss;
+  std::vector<V> cloud;
+  for (int k = 0; k < 40; ++k) cloud.push_back(V(gauss(rng), 0.75 * gauss(rng), 0.6 * gauss(rng)).normalized());
+  const auto polytope = Polytope<double>::hull(cloud);
+
+  const int W = 380, H = 340;
+  Canvas canvas(3 * W, 2 * H);
+  int panel = 0;
+  auto next = [&](const std::string& title) {
+    canvas.setPanel({(panel % 3) * W, (panel / 3) * H, W, H});
+    ++panel;
+    canvas.title(title);
+    canvas.setCamera(Camera::orbit(Eigen::Vector3d::Zero(), 1.9, 0.5, 0.45, 0.6, canvas.plotAspect()));
+  };
+  const MeshStyle solid{palette::bodyPFill.withAlpha(0.55), Stroke{palette::bodyPStroke, 1.0}, true, true};
+
+  next("segment: the end farther along s");
+  canvas.line3(segment.a, segment.b, Stroke{palette::bodyPStroke, style::lineThick});
+  drawSupports(canvas, segment);
+  next("triangle: the vertex farthest along s");
+  canvas.polygon3({triangle.a, triangle.b, triangle.c}, style::bodyP);
+  drawSupports(canvas, triangle);
+  next("box: the corner in the octant of s");
+  canvas.mesh(meshFromSupport(box, 60), solid);
+  drawSupports(canvas, box);
+  next("sphere: r s / |s|");
+  canvas.mesh(meshFromSupport(sphere), MeshStyle{solid.fill, solid.edges, false, true});
+  drawSupports(canvas, sphere);
+  next("capsule: segment + ball");
+  canvas.mesh(meshFromSupport(capsule), MeshStyle{solid.fill, solid.edges, false, true});
+  drawSupports(canvas, capsule);
+  next("polytope (" + std::to_string(polytope.vertexCount()) + " vertices): hill climbing");
+  canvas.mesh(meshOf(polytope), solid);
+  drawSupports(canvas, polytope);
+
+  const std::string path = out + "/support-mapping-shapes.png";
+  canvas.savePng(path);
+  chapter::wrote(path);
+}
+
+// One panel: the climb from `hint` to S_X(s), vertex by vertex.
+void drawClimb(Canvas& canvas, const Polytope<double>& X, const V& s, int hint, double lookDown, const std::string& title) {
+  const std::vector<int> path = X.climbPath(s, hint);
+  const size_t steps = path.size() - 1;
+  canvas.title(title + ": " + std::to_string(steps) + (steps == 1 ? " step" : " steps"));
+  // Look at the path from the side (across s, from its vertex farthest off the s axis),
+  // tilted towards s by `lookDown`, so the path and s both lie across the view.
+  const V axis = s.normalized();
+  V side = axis.unitOrthogonal();
+  for (int v : path) {
+    const V off = X.vertex(v) - X.vertex(v).dot(axis) * axis;
+    if (off.norm() > 0.2) side = off.normalized();
+  }
+  const V view = (side + lookDown * axis).normalized();
+  canvas.setCamera(Camera::orbit(Eigen::Vector3d::Zero(), 1.4, std::atan2(view.y(), view.x()),
+                                 std::asin(std::clamp(view.z(), -0.9, 0.9)), 0.6, canvas.plotAspect()));
+  canvas.mesh(meshOf(X), MeshStyle{palette::minkowskiFill.withAlpha(0.9), Stroke{palette::minkowskiStroke, 0.8}, true, true});
+  std::vector<Eigen::Vector3d> points;
+  for (int v : path) points.push_back(1.004 * X.vertex(v));  // just above the surface
+  canvas.polyline3(points, style::highlightStroke);
+  for (size_t k = 0; k < path.size(); ++k) canvas.point3(points[k], palette::highlight, 3.5);
+  canvas.point3(points.front(), palette::background, 6, Stroke{palette::ink, 2});
+  canvas.text3(points.front(), "hint", mathLabel, Anchor::BelowLeft);
+  canvas.point3(points.back(), palette::direction, 6, Stroke{palette::ink, 1.5});
+  canvas.text3(points.back(), "S_X(s)", mathLabel, Anchor::AboveRight);
+  canvas.arrow3(points.back(), points.back() + 0.35 * s.normalized(), style::directionStroke);
+  canvas.text3(points.back() + 0.35 * s.normalized(), "s", TextStyle{Font::Math, style::labelSize, palette::direction},
+               Anchor::Right);
+}
+
+void hillClimbingFigure(const std::string& out) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> gauss;
+  std::vector<V> points;
+  for (int k = 0; k < 300; ++k) points.push_back(V(gauss(rng), gauss(rng), gauss(rng)).normalized());
+  const auto X = Polytope<double>::hull(points);
+  const V s = V(0.3, -0.2, 1).normalized();
+  const V previous = Eigen::AngleAxisd(0.45, V::UnitX()) * s;  // last query's direction, about 26 degrees away
+  SupportHint warm = X.supportIndexLinearScan(-s);               // a cold start: the vertex opposite the answer
+  const int cold = warm;
+  X.support(previous, warm);                                     // a warm start: the answer to the last query
+
+  const int W = 480, H = 440;
+  Canvas canvas(2 * W, H);
+  canvas.setPanel({0, 0, W, H});
+  drawClimb(canvas, X, s, cold, 0.5, "cold start from the far side");
+  canvas.setPanel({W, 0, W, H});
+  drawClimb(canvas, X, s, warm, 2.0, "warm start from the last answer");
+  const std::string path = out + "/support-mapping-hill-climbing.png";
+  canvas.savePng(path);
+  chapter::wrote(path);
+  std::printf("hill climbing on %d vertices: %zu steps cold, %zu steps warm\n", X.vertexCount(),
+              X.climbPath(s, cold).size() - 1, X.climbPath(s, warm).size() - 1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = chapter::outputFolder(argc, argv);
+  shapesFigure(out);
+  hillClimbingFigure(out);
+  return 0;
+}

@@ -1,0 +1,188 @@
+// Chapter 03: supporting distance (§2.3) and its maximum (§4), Fig. 3 of the paper.
+//
+// SD(P, Q, s) = s.S_Q(-s) - s.S_P(s) "is the signed distance between the supporting
+// planes of P and Q in opposing directions of s". We draw, for two polygons in z = 0:
+//   (a) a separating vector: the two supporting lines normal to s leave a gap, SD > 0;
+//   (b) a direction that does not separate: the lines cross over, SD < 0;
+//   (c) SD as a function of the direction's angle, with (a), (b) and the maximum marked;
+//   (d) the maximum over all directions when P and Q are disjoint: the closest distance;
+//   (e) the maximum when they intersect: minus the penetration depth (§4, "a negative
+//       value is the penetration distance when they intersect");
+//   (f) SD over the angle for the intersecting pair: it never reaches zero.
+#include "../chapter.hpp"
+
+#include <gjkx/render/canvas.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/support_mapping/polytope.hpp>
+#include <gjkx/supporting_distance/intersection.hpp>
+#include <gjkx/supporting_distance/supporting_distance.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace gjkx;
+using namespace gjkx::render;
+using V = Vector3<double>;
+using chapter::xy;
+using Body = Placed<Polytope<double>>;
+
+namespace {
+
+constexpr int kSamples = 1440;  // directions on the unit circle: a quarter degree apart
+
+V direction(double angle) { return V(std::cos(angle), std::sin(angle), 0); }
+
+std::string fixed(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", x);
+  return buffer;
+}
+
+std::vector<Eigen::Vector2d> outline(const Body& body) {
+  std::vector<Eigen::Vector2d> points;
+  for (const V& v : body.shape.vertices()) points.push_back(xy(body.worldFromBody(v)));
+  return points;
+}
+
+void drawBodies(Canvas& canvas, const Body& P, const Body& Q) {
+  canvas.polygon(outline(P), style::bodyP);
+  canvas.polygon(outline(Q), style::bodyQ);
+  // Each name on the far side of its body's centre, clear of the contact.
+  const Eigen::Vector2d apart = (xy(Q.center()) - xy(P.center())).normalized();
+  canvas.text(xy(P.center()) - 0.9 * apart, "P", TextStyle{Font::Math, 22, palette::bodyPStroke});
+  canvas.text(xy(Q.center()) + 0.6 * apart, "Q", TextStyle{Font::Math, 22, palette::bodyQStroke});
+}
+
+// The supporting lines of P and Q normal to s, through S_P(s) and S_Q(-s), and the
+// signed gap between them measured along s from S_P(s): green when positive, red when not.
+void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const V& s, const std::string& name) {
+  const V unit = s.normalized();
+  const V sp = P.support(unit), sq = Q.support(-unit);
+  const double sd = supportingDistance(P, Q, unit);
+  const Eigen::Vector2d along(-unit.y(), unit.x());
+  for (const V& through : {sp, sq}) canvas.line(xy(through) - 30 * along, xy(through) + 30 * along, style::separatingStroke);
+  const Color color = sd > 0 ? palette::direction : palette::penetration;
+  // The gap, drawn beside S_P(s) so it does not hide the bodies' contact.
+  const Eigen::Vector2d from = xy(sp) + 0.8 * along, to = from + sd * xy(unit);
+  canvas.arrow(from, to, Stroke{color, style::lineThick});
+  canvas.arrow(to, from, Stroke{color, style::lineThick});
+  canvas.text(0.5 * (from + to), "SD = " + fixed(sd), TextStyle{Font::Math, style::labelSize, color, 3.0},
+              chapter::toward(along));
+  // s itself, drawn from the panel's lower left corner.
+  const Eigen::Vector2d corner(-1.2, -2.2);
+  canvas.arrow(corner, corner + 1.6 * xy(unit), style::directionStroke);
+  canvas.text(corner + 1.6 * xy(unit), name, TextStyle{Font::Math, style::labelSize, palette::direction},
+              chapter::toward(xy(unit)));
+  canvas.point(xy(sp), palette::bodyPStroke, 4.5);
+  canvas.point(xy(sq), palette::bodyQStroke, 4.5);
+  canvas.text(xy(sp), "S_P(" + name + ")", mathLabel, chapter::toward(-xy(unit) - along));
+  canvas.text(xy(sq), "S_Q(-" + name + ")", mathLabel, chapter::toward(xy(unit) - along));
+}
+
+// SD over the angle of s in [0, 2 pi), scaled so the plot fills the panel.
+void drawProfile(Canvas& canvas, const Body& P, const Body& Q, const std::vector<std::pair<double, std::string>>& marks) {
+  std::vector<double> sd(kSamples);
+  double lo = 0, hi = 0;
+  for (int k = 0; k < kSamples; ++k) {
+    sd[k] = supportingDistance(P, Q, direction(2 * M_PI * k / kSamples));
+    lo = std::min(lo, sd[k]);
+    hi = std::max(hi, sd[k]);
+  }
+  const double width = 1.6 * (hi - lo);  // x = angle scaled to this many SD units
+  auto at = [&](double angle, double value) { return Eigen::Vector2d(angle / (2 * M_PI) * width, value); };
+  canvas.setWorldWindow(-0.12 * width, 1.05 * width, lo - 0.15 * (hi - lo), hi + 0.3 * (hi - lo));
+  canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
+  canvas.line(at(0, 0), at(2 * M_PI, 0), style::axisStroke);
+  canvas.line(at(0, lo), at(0, hi), style::axisStroke);
+  std::vector<Eigen::Vector2d> curve;
+  for (int k = 0; k <= kSamples; ++k) curve.push_back(at(2 * M_PI * k / kSamples, sd[k % kSamples]));
+  canvas.polyline(curve, Stroke{palette::ink, style::lineThin});
+  canvas.text(at(1.5 * M_PI, 0), "angle of s", smallText, Anchor::Below);
+  for (const auto& [angle, tick] : {std::pair<double, const char*>{0, "0"}, {M_PI, "\u03c0"}, {2 * M_PI, "2\u03c0"}}) {
+    canvas.line(at(angle, 0), at(angle, 0) + Eigen::Vector2d(0, -0.03 * (hi - lo)), style::axisStroke);
+    canvas.text(at(angle, 0), tick, smallText, angle > M_PI ? Anchor::BelowLeft : Anchor::BelowRight);
+  }
+  canvas.text(at(0, hi + 0.2 * (hi - lo)), "SD", mathLabel, Anchor::Left);
+  for (const auto& [angle, label] : marks) {
+    const double value = supportingDistance(P, Q, direction(angle));
+    const Color color = value > 0 ? palette::direction : palette::penetration;
+    canvas.line(at(angle, 0), at(angle, value), Stroke{color, 1.0, style::dotted});
+    canvas.point(at(angle, value), color, 4.5);
+    canvas.text(at(angle, value), label, TextStyle{Font::Math, style::labelSize, color, 3.0},
+                value > 0 ? Anchor::Above : Anchor::Below);
+  }
+}
+
+// The best of the sampled directions: the maximum supporting distance (§4).
+MaximumSupportingDistance<double> maximum(const Body& P, const Body& Q) {
+  std::vector<V> dirs;
+  for (int k = 0; k < kSamples; ++k) dirs.push_back(direction(2 * M_PI * k / kSamples));
+  return maximumSupportingDistance(P, Q, dirs);
+}
+
+double angleOf(const V& s) { return std::fmod(std::atan2(s.y(), s.x()) + 2 * M_PI, 2 * M_PI); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = chapter::outputFolder(argc, argv);
+
+  const auto pentagon = Polytope<double>::polygon({V(0, 0, 0), V(3, -0.5, 0), V(4, 2, 0), V(2, 4, 0), V(-0.5, 2.5, 0)});
+  const auto quad = Polytope<double>::polygon({V(0, 0, 0), V(2.5, 0.5, 0), V(2, 3, 0), V(-0.5, 2, 0)});
+  const Body P = place(pentagon, Pose<double>::identity());
+  const Body Qapart = place(quad, Pose<double>::fromAxisAngle(V::UnitZ(), 0.3, V(6.5, 0.5, 0)));
+  const Body Qinside = place(quad, Pose<double>::fromAxisAngle(V::UnitZ(), 0.3, V(3.2, 0.8, 0)));
+
+  const double separatingAngle = 0.75, otherAngle = 1.9;
+  const auto bestApart = maximum(P, Qapart);
+  const auto bestInside = maximum(P, Qinside);
+  const auto distance = gjk(P, Qapart);
+
+  const int W = 440, H = 380;
+  Canvas canvas(3 * W, 2 * H);
+  auto panel = [&](int col, int row, const std::string& title) {
+    canvas.setPanel({col * W, row * H, W, H});
+    canvas.title(title);
+  };
+  panel(0, 0, "(a) s_a separates: SD > 0");
+  canvas.setWorldWindow(-2, 11, -3, 6);
+  canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
+  drawBodies(canvas, P, Qapart);
+  drawSupportingDistance(canvas, P, Qapart, direction(separatingAngle), "s_a");
+
+  panel(1, 0, "(b) s_b does not separate: SD < 0");
+  canvas.setWorldWindow(-2, 11, -3, 6);
+  canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
+  drawBodies(canvas, P, Qapart);
+  drawSupportingDistance(canvas, P, Qapart, direction(otherAngle), "s_b");
+
+  panel(2, 0, "(c) SD(P, Q, s) over all directions");
+  drawProfile(canvas, P, Qapart,
+              {{separatingAngle, "s_a"}, {otherAngle, "s_b"}, {angleOf(bestApart.direction), "max"}});
+
+  panel(0, 1, "(d) disjoint: max SD = distance = " + fixed(bestApart.value));
+  canvas.setWorldWindow(-2, 11, -3, 6);
+  canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
+  drawBodies(canvas, P, Qapart);
+  drawSupportingDistance(canvas, P, Qapart, bestApart.direction, "s");
+  canvas.line(xy(distance.witnessP), xy(distance.witnessQ), Stroke{palette::ink, 1.0, style::dotted});
+
+  panel(1, 1, "(e) intersecting: max SD = -depth = " + fixed(bestInside.value));
+  canvas.setWorldWindow(-3, 9, -3, 6);
+  canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
+  drawBodies(canvas, P, Qinside);
+  drawSupportingDistance(canvas, P, Qinside, bestInside.direction, "s");
+
+  panel(2, 1, "(f) intersecting: SD < 0 in every direction");
+  drawProfile(canvas, P, Qinside, {{angleOf(bestInside.direction), "max"}});
+
+  const std::string path = out + "/fig03-supporting-distance.png";
+  canvas.savePng(path);
+  chapter::wrote(path);
+  std::printf("disjoint:     max SD over %d directions = %.4f, GJK distance = %.4f\n", kSamples, bestApart.value,
+              distance.distance);
+  std::printf("intersecting: max SD over %d directions = %.4f (minus the penetration depth); static test: %s\n",
+              kSamples, bestInside.value, toString(intersect(P, Qinside).status));
+  return 0;
+}

@@ -1,0 +1,64 @@
+// What every chapter program shares: its command line (--out DIR) and the
+// conversion of the library's 3D vectors to the plane of a 2D figure.
+#pragma once
+
+#include <gjkx/motion/vector.hpp>
+#include <gjkx/render/canvas.hpp>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace chapter {
+
+/// The output folder from `--out DIR` (default: the current folder), created if needed.
+inline std::string outputFolder(int argc, char** argv) {
+  std::string out = ".";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--out" && i + 1 < argc) {
+      out = argv[++i];
+    } else if (arg == "--help" || arg == "-h") {
+      std::printf("usage: %s [--out DIR]\n  draws this chapter's figures as PNG files in DIR\n", argv[0]);
+      std::exit(0);
+    } else {
+      std::fprintf(stderr, "%s: unknown argument '%s' (usage: %s [--out DIR])\n", argv[0], arg.c_str(), argv[0]);
+      std::exit(2);
+    }
+  }
+  std::filesystem::create_directories(out);
+  return out;
+}
+
+/// A point of the plane z = 0 as the renderer's 2D point.
+template <typename S>
+Eigen::Vector2d xy(const gjkx::Vector3<S>& v) {
+  return Eigen::Vector2d(double(v.x()), double(v.y()));
+}
+
+/// Many points of the plane z = 0 as the renderer's 2D points.
+template <typename S>
+std::vector<Eigen::Vector2d> xy(const std::vector<gjkx::Vector3<S>>& points) {
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& p : points) out.push_back(xy(p));
+  return out;
+}
+
+/// The label anchor that puts a label on the side of a point that `direction` points to.
+inline gjkx::render::Anchor toward(const Eigen::Vector2d& direction) {
+  using gjkx::render::Anchor;
+  static const Anchor compass[8] = {Anchor::Right, Anchor::AboveRight, Anchor::Above, Anchor::AboveLeft,
+                                    Anchor::Left,  Anchor::BelowLeft,  Anchor::Below, Anchor::BelowRight};
+  const double turns = std::atan2(direction.y(), direction.x()) / (2 * M_PI);
+  return compass[(static_cast<int>(std::lround(turns * 8)) % 8 + 8) % 8];
+}
+
+/// Where a figure was written, said on standard output.
+inline void wrote(const std::string& path) { std::printf("wrote %s\n", path.c_str()); }
+
+}  // namespace chapter
