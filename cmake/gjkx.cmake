@@ -57,6 +57,18 @@ function(gjkx_chapter name)
   set_property(GLOBAL APPEND PROPERTY GJKX_CHAPTERS ${name})
 endfunction()
 
+# gjkx_program(<name> SOURCE <chapters/... file> STAGES <stages>...)
+#
+# A command-line program of a chapter that draws nothing (it prints tables), so it
+# builds without the renderer too; e.g. ccd_queries in chapter 05.
+function(gjkx_program name)
+  cmake_parse_arguments(ARG "" "SOURCE" "STAGES" ${ARGN})
+  list(TRANSFORM ARG_STAGES PREPEND gjkx:: OUTPUT_VARIABLE stages)
+  add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE})
+  target_link_libraries(${name} PRIVATE ${stages})
+  gjkx_warnings(${name})
+endfunction()
+
 # gjkx_test(<stage> <concept> [LINKS <extra targets>...])
 #
 # tests/<stage>/test_<concept>.cpp, a Catch2 test linked with gjkx::<stage>.

@@ -12,6 +12,24 @@
 
 namespace gjkx {
 
+/// How fast a motion can bend a body's path: the bounds the certified extrusion test
+/// needs (beyond the paper, see gjkx/extrusion/certified_margin.hpp). A body point at
+/// distance r from the body origin has acceleration at most
+/// \f$\lVert\ddot x\rVert \le a + \alpha r + \omega^2 r\f$ (translation, angular acceleration, centripetal).
+template <typename Scalar>
+struct MotionBound {
+  /// Upper bound of the body origin's acceleration \f$\lVert\ddot p\rVert\f$.
+  Scalar linearAcceleration = Scalar(0);
+  /// Upper bound of the angular speed \f$\lVert\omega\rVert\f$.
+  Scalar angularSpeed = Scalar(0);
+  /// Upper bound of the angular acceleration \f$\lVert\dot\omega\rVert\f$.
+  Scalar angularAcceleration = Scalar(0);
+  /// \f$a + \alpha r + \omega^2 r\f$: the largest acceleration of a body point within `radius` of the origin.
+  Scalar pointAcceleration(Scalar radius) const {
+    return linearAcceleration + (angularAcceleration + angularSpeed * angularSpeed) * radius;
+  }
+};
+
 /// A body that does not move: `pose(t)` is the same for every t.
 template <typename Scalar>
 struct StaticMotion {
@@ -19,6 +37,8 @@ struct StaticMotion {
   Pose<Scalar> start;
   /// The pose at time t (always `start`).
   const Pose<Scalar>& pose(Scalar /*t*/) const { return start; }
+  /// No motion at all.
+  MotionBound<Scalar> bound() const { return {}; }
 };
 
 /// Constant linear velocity, no rotation: \f$p(t) = p_0 + v\,(t - t_0)\f$ ("linear motion", §3).
@@ -36,6 +56,8 @@ struct ConstantVelocity {
     p.translation += velocity * (t - t0);
     return p;
   }
+  /// Linear motion: nothing bends.
+  MotionBound<Scalar> bound() const { return {}; }
 };
 
 /// Constant acceleration, no rotation (ballistic flight): \f$p(t) = p_0 + v\,\tau + \tfrac12 a\,\tau^2\f$, \f$\tau = t - t_0\f$.
@@ -57,6 +79,8 @@ struct ConstantAcceleration {
     p.translation += velocity * tau + acceleration * (Scalar(0.5) * tau * tau);
     return p;
   }
+  /// The acceleration, and no rotation.
+  MotionBound<Scalar> bound() const { return {acceleration.norm(), Scalar(0), Scalar(0)}; }
 };
 
 /// Screw motion: constant linear velocity of the body origin and constant angular
@@ -83,6 +107,8 @@ struct ScrewMotion {
     p.translation += velocity * tau;
     return p;
   }
+  /// Constant angular speed, no linear acceleration.
+  MotionBound<Scalar> bound() const { return {Scalar(0), angularVelocity.norm(), Scalar(0)}; }
 };
 
 /// Interpolation between two poses over [t0, t1]: the translation moves on a line and
@@ -108,15 +134,12 @@ struct PoseInterpolation {
     p.translation = from.translation + u * (to.translation - from.translation);
     return p;
   }
+  /// The slerp turns at a constant rate: the angle between the two rotations over t1 - t0.
+  MotionBound<Scalar> bound() const {
+    const Eigen::Quaternion<Scalar> q0(from.rotation), q1(to.rotation);
+    return {Scalar(0), q0.angularDistance(q1) / (t1 - t0), Scalar(0)};
+  }
 };
-
-/// Checks a time interval [t0, t1]: both finite and t1 >= t0 (the message names the field).
-template <typename Scalar>
-void requireInterval(Scalar t0, Scalar t1, const std::string& field) {
-  requireFinite(t0, field + ".t0");
-  requireFinite(t1, field + ".t1");
-  if (t1 < t0) failInput(field + ".t1", "must not be before t0");
-}
 
 /// Any of the rigid motions above, behind one `pose(t)`.
 ///
@@ -174,6 +197,10 @@ class Motion {
   /// The pose `worldFromBody` at time t.
   Pose<Scalar> pose(Scalar t) const {
     return std::visit([t](const auto& m) { return Pose<Scalar>(m.pose(t)); }, motion_);
+  }
+  /// Bounds of the motion's acceleration and rotation (for the certified extrusion test).
+  MotionBound<Scalar> bound() const {
+    return std::visit([](const auto& m) { return m.bound(); }, motion_);
   }
   /// True for a body that never moves (lets a scene skip its work).
   bool isStatic() const { return std::holds_alternative<StaticMotion<Scalar>>(motion_); }

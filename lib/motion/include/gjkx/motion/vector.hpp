@@ -36,4 +36,12 @@ void requireFinite(const Vector3<Scalar>& v, const std::string& field) {
   if (!v.allFinite()) failInput(field, "must be finite (no NaN or infinity)");
 }
 
+/// Checks a time interval [t0, t1]: both finite and t1 >= t0 (the message names the field).
+template <typename Scalar>
+void requireInterval(Scalar t0, Scalar t1, const std::string& field) {
+  requireFinite(t0, field + ".t0");
+  requireFinite(t1, field + ".t1");
+  if (t1 < t0) failInput(field + ".t1", "must not be before t0");
+}
+
 }  // namespace gjkx

@@ -42,8 +42,13 @@ Placed<Shape> place(const Shape& shape, const Pose<typename Shape::Scalar>& worl
 
 /// A shape moving along a rigid motion: X(t) = `Placed{shape, motion.pose(t)}`.
 ///
-/// The stages after GJK (extrusion, Brent) ask a moving body only for
-/// `support(s, t)`, the supporting vertex of X(t): that one door fits every motion.
+/// The stages after GJK (extrusion, Brent) see a moving body only through this door:
+/// - `at(t)`: the body at time t, a static support mapping GJK runs on (the pose is
+///   computed once, not once per support query);
+/// - `support(s, t)`: \f$S_{X(t)}(\vec{s})\f$;
+/// - `accelerationBound()`: how fast any point of the body can accelerate, for the
+///   certified extrusion test (zero for linear motion).
+/// Rigid motion, accelerated motion and per-vertex linear motion (DeformingSimplex) all fit.
 template <typename Shape>
 struct Moving {
   /// The scalar type.
@@ -57,6 +62,15 @@ struct Moving {
   Placed<Shape> at(Scalar t) const { return Placed<Shape>{shape, motion.pose(t)}; }
   /// \f$S_{X(t)}(\vec{s})\f$.
   Vector3<Scalar> support(const Vector3<Scalar>& s, Scalar t) const { return at(t).support(s); }
+  /// The largest acceleration of a point of the body: \f$a + \alpha r + \omega^2 r\f$ with r the
+  /// shape's bounding radius about its body origin (the centre of rotation).
+  Scalar accelerationBound() const { return motion.bound().pointAcceleration(shape.boundingRadius()); }
 };
+
+/// `moving(shape, motion)`: a shape moving along a motion.
+template <typename Shape>
+Moving<Shape> moving(const Shape& shape, const Motion<typename Shape::Scalar>& motion) {
+  return Moving<Shape>{shape, motion};
+}
 
 }  // namespace gjkx

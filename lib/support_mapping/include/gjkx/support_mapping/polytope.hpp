@@ -5,6 +5,7 @@
 #include <gjkx/support_mapping/convex_hull.hpp>
 #include <gjkx/support_mapping/support.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -80,6 +81,8 @@ class Polytope {
 
   /// The centroid of the vertices (a point inside).
   Vector3<S> center() const { return data_->centroid; }
+  /// The largest distance of a vertex from the body origin (§3, certified margin).
+  S boundingRadius() const { return data_->radius; }
   /// The number of hull vertices.
   int vertexCount() const { return static_cast<int>(data_->vertices.size()); }
   /// Hull vertex v.
@@ -103,6 +106,7 @@ class Polytope {
     std::vector<std::array<int, 3>> triangles;
     Vector3<S> centroid;
     bool planar;
+    S radius;
   };
 
   explicit Polytope(const ConvexHull& hull) {
@@ -113,6 +117,8 @@ class Polytope {
       data->centroid += data->vertices.back();
     }
     data->centroid /= S(hull.vertices.size());
+    data->radius = S(0);
+    for (const auto& v : data->vertices) data->radius = std::max(data->radius, v.norm());
     data->firstNeighbour = hull.firstNeighbour;
     data->neighbours = hull.neighbours;
     data->triangles = hull.triangles;

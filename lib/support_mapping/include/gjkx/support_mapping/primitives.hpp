@@ -8,6 +8,8 @@
 
 #include <gjkx/support_mapping/support.hpp>
 
+#include <algorithm>
+
 namespace gjkx {
 
 /// A single point \f$\{a\}\f$: \f$S(\vec{s}) = a\f$ for every s.
@@ -23,6 +25,8 @@ struct Point {
   Vector3<S> support(const Vector3<S>& /*s*/) const { return a; }
   /// The point itself.
   Vector3<S> center() const { return a; }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return a.norm(); }
 };
 
 /// The segment \f$[a, b]\f$: the end farther along s, \f$S(\vec{s}) = \vec{s}\cdot a \ge \vec{s}\cdot b\ ?\ a : b\f$.
@@ -43,6 +47,8 @@ struct Segment {
   Vector3<S> support(const Vector3<S>& s) const { return s.dot(b) > s.dot(a) ? b : a; }
   /// The midpoint.
   Vector3<S> center() const { return (a + b) * S(0.5); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return std::max(a.norm(), b.norm()); }
 };
 
 /// The triangle with vertices a, b, c: the vertex with the largest \f$\vec{s}\cdot x\f$.
@@ -70,6 +76,8 @@ struct Triangle {
   }
   /// The centroid.
   Vector3<S> center() const { return (a + b + c) / S(3); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return std::max({a.norm(), b.norm(), c.norm()}); }
 };
 
 /// The box \f$[-h_x,h_x]\times[-h_y,h_y]\times[-h_z,h_z]\f$ centred on the body origin:
@@ -92,6 +100,8 @@ struct Box {
   }
   /// The body origin.
   Vector3<S> center() const { return Vector3<S>::Zero(); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return halfExtents.norm(); }
 };
 
 /// The ball of radius r about the body origin: \f$S(\vec{s}) = r\,\vec{s}/\lVert\vec{s}\rVert\f$.
@@ -110,6 +120,8 @@ struct Sphere {
   }
   /// The body origin.
   Vector3<S> center() const { return Vector3<S>::Zero(); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return radius; }
 };
 
 /// The capsule: all points within r of the segment [a, b]. Its support is the
@@ -135,6 +147,8 @@ struct Capsule {
   }
   /// The midpoint of the axis.
   Vector3<S> center() const { return axis.center(); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified margin).
+  S boundingRadius() const { return axis.boundingRadius() + radius; }
 
  private:
   static const Vector3<S>& checked(const Vector3<S>& end, const char* field) {

@@ -36,6 +36,10 @@ class Shape {
   Vector3<S> center() const {
     return std::visit([](const auto& x) { return Vector3<S>(x.center()); }, shape_);
   }
+  /// The largest distance of a point of the shape from the body origin.
+  S boundingRadius() const {
+    return std::visit([](const auto& x) { return S(x.boundingRadius()); }, shape_);
+  }
   /// The alternative held.
   const Variant& variant() const { return shape_; }
 

@@ -1,0 +1,316 @@
+/// @file
+/// @brief The time-of-impact solver of §5: the extrusion test of §3 driven by Brent's method.
+///
+/// §5: "If the initial extrusion test at \f$t_0\f$ and \f$t_1\f$ fails, we use the closest distance
+/// at \f$t_0\f$ and the approximate maximum supporting distance at \f$t_1\f$ to calculate an
+/// intermediate time \f$t_x\f$ using Brent's method. [...] we can speed up this intermediate
+/// query by storing all the separating vectors \f$\vec{s}_i\f$ we found at \f$t_0\f$, and use this set
+/// [...] to recalculate \f$SD(P(t_x), Q(t_x), \vec{s}_i)\f$ and obtain a new approximate maximum
+/// supporting distance at \f$t_x\f$. If this distance is negative, we continue normally with
+/// further iterations of Brent's method. However, if this distance is positive, we assume
+/// P and Q are disjoint from \f$t_0\f$ to \f$t_x\f$, so we recompute a complete GJK extrusion test
+/// for \f$t_x\f$ and \f$t_1\f$ in order to determine the exact closest distance at \f$t_x\f$ before we
+/// proceed."
+///
+/// The function Brent solves on the current interval \f$[t_a, t_1]\f$ is
+/// \f[ F(t) = \max_k SD(P(t), Q(t), \vec{s}_k) - m(t - t_a) - \mathrm{tol}, \f]
+/// the approximate maximum supporting distance from the stored vectors \f$\vec{s}_k\f$, less the
+/// certified margin m (zero for the paper's variant) and the collision tolerance: its root
+/// is where the bodies come within the tolerance. \f$F(t_a) > 0\f$ (the exact distance at
+/// \f$t_a\f$ exceeds the tolerance) and \f$F(t_1) \le 0\f$ (the extrusion test failed), so it is
+/// a bracket. At each iterate \f$t_x\f$:
+/// - approximate maximum SD \f$\le 0\f$: no stored vector separates at \f$t_x\f$; Brent goes on;
+/// - positive: \f$[t_a, t_x]\f$ is free of contact; a complete extrusion test on \f$[t_x, t_1]\f$
+///   then either succeeds (a *photo finish*: no collision, proven on a chain of intervals),
+///   finds the bodies within the tolerance at \f$t_x\f$ (the *time of impact*: "the maximum
+///   supporting distance is positive and smaller than the collision tolerance"), or
+///   fails again, and Brent restarts on \f$[t_x, t_1]\f$ with the new vectors.
+/// When Brent's bracket shrinks below the time tolerance, the last time proven free of
+/// contact, \f$t_a\f$, is the time of impact (the distance there is within round-off of the
+/// tolerance). Every reported time is one at which the bodies do not interpenetrate.
+#pragma once
+
+#include <gjkx/brent/root_finder.hpp>
+#include <gjkx/extrusion/extrusion_test.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace gjkx {
+
+/// How the time-of-impact solver ended.
+enum class ToiStatus {
+  NoCollision,        ///< the first extrusion test over \f$[t_0, t_1]\f$ succeeded
+  PhotoFinish,        ///< no collision, proven on a chain of subintervals \f$[t_0, t_{x1}], \dots, [t_{xn}, t_1]\f$
+  Hit,                ///< the bodies come within the collision tolerance at `time`
+  StartsPenetrating,  ///< within the tolerance at \f$t_0\f$ and not moving apart
+  Separating,         ///< within the tolerance at \f$t_0\f$ but provably moving apart: no new contact
+  IterationCap,       ///< the cap on Brent iterations (or GJK's) ran out: undecided, never "no collision"
+  NumericalFailure,   ///< a support mapping returned a point that is not finite
+};
+
+/// The name of a status, for messages and tables.
+inline const char* toString(ToiStatus status) {
+  switch (status) {
+    case ToiStatus::NoCollision: return "no-collision";
+    case ToiStatus::PhotoFinish: return "photo-finish";
+    case ToiStatus::Hit: return "hit";
+    case ToiStatus::StartsPenetrating: return "starts-penetrating";
+    case ToiStatus::Separating: return "separating";
+    case ToiStatus::IterationCap: return "iteration-cap";
+    case ToiStatus::NumericalFailure: return "numerical-failure";
+  }
+  return "?";
+}
+
+/// True for the statuses that report a collision (or may, for a cap: a caller that must
+/// not miss treats an undecided pair as colliding).
+inline bool reportsCollision(ToiStatus status) {
+  return status == ToiStatus::Hit || status == ToiStatus::StartsPenetrating || status == ToiStatus::IterationCap ||
+         status == ToiStatus::NumericalFailure;
+}
+
+/// Settings of the time-of-impact solver.
+template <typename S>
+struct ToiSettings {
+  /// Bodies closer than this collide (§2.3); default \f$\sqrt{\epsilon}\f$.
+  S collisionTolerance = defaultCollisionTolerance<S>();
+  /// Brent stops when the time of impact is bracketed within this fraction of the interval.
+  /// Default \f$\sqrt{\epsilon}\f$.
+  S timeTolerance = std::sqrt(std::numeric_limits<S>::epsilon());
+  /// The paper's extrusion test or the certified one.
+  ExtrusionVariant variant = ExtrusionVariant::Paper;
+  /// The cap on Brent iterations over all restarts (the paper saw at most 43).
+  int maxIterations = 100;
+  /// Settings of every GJK run.
+  GjkSettings<S> gjk;
+};
+
+/// One Brent iterate of the solver, as chapter 05 draws it.
+template <typename S>
+struct ToiStep {
+  /// The iterate \f$t_x\f$.
+  S t = S(0);
+  /// The approximate maximum supporting distance at \f$t_x\f$ from the stored vectors (less the margin).
+  S approximateMaxSd = S(0);
+  /// The low end \f$t_a\f$ of the bracket the iterate was taken in: the last time proven free of contact.
+  S bracketLow = S(0);
+  /// The high end of that bracket.
+  S bracketHigh = S(0);
+  /// The rule that chose \f$t_x\f$.
+  BrentStepKind kind = BrentStepKind::Bisection;
+  /// True when the approximate maximum was positive and a complete extrusion test followed.
+  bool completeTest = false;
+};
+
+/// One complete extrusion test of the solver (the first, and one per restart).
+template <typename S>
+struct ToiInterval {
+  /// Its start \f$t_a\f$ (the end is always \f$t_1\f$).
+  S start = S(0);
+  /// Its verdict.
+  ExtrusionStatus status = ExtrusionStatus::Undecided;
+  /// The exact closest distance at \f$t_a\f$.
+  S distanceAtStart = S(0);
+  /// The separating vectors found at \f$t_a\f$ (drawn as lines \f$SD(t, \vec{s}_k)\f$ by chapter 05).
+  SeparatingVectors<S> separating;
+};
+
+/// A caller-owned record of a solver run (for the figures and step-by-step tests).
+template <typename S>
+struct ToiTrace {
+  /// The Brent iterates, in order.
+  std::vector<ToiStep<S>> steps;
+  /// The complete extrusion tests, in order.
+  std::vector<ToiInterval<S>> intervals;
+};
+
+/// What the solver found.
+template <typename S>
+struct ToiResult {
+  /// The verdict.
+  ToiStatus status = ToiStatus::IterationCap;
+  /// The time of impact when `Hit` (\f$t_0\f$ for `StartsPenetrating`); for a cap, the last
+  /// time proven free of contact.
+  S time = S(0);
+  /// The closest distance at `time` (at most the tolerance for a hit, up to round-off).
+  S distance = S(0);
+  /// Unit contact normal at `time`, from P towards Q.
+  Vector3<S> normal = Vector3<S>::Zero();
+  /// The closest point of P at `time`.
+  Vector3<S> witnessP = Vector3<S>::Zero();
+  /// The closest point of Q at `time`.
+  Vector3<S> witnessQ = Vector3<S>::Zero();
+  /// Brent iterates evaluated (the paper: 2.2 on average, 43 at worst).
+  int brentIterations = 0;
+  /// Complete GJK runs (one per extrusion test).
+  int gjkRuns = 0;
+  /// Supporting distances evaluated, including those GJK measured.
+  int sdEvaluations = 0;
+  /// Complete extrusion tests after the first (restarts of Brent).
+  int restarts = 0;
+};
+
+namespace detail {
+template <typename S>
+void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test) {
+  result.time = time;
+  result.distance = test.distanceAtStart;
+  result.witnessP = test.witnessP;
+  result.witnessQ = test.witnessQ;
+  const Vector3<S> z = test.witnessQ - test.witnessP;
+  result.normal = z.norm() > S(0) ? Vector3<S>(z.normalized()) : Vector3<S>::Zero();
+}
+}  // namespace detail
+
+/// Non-collision or the time of impact of two moving bodies over \f$[t_0, t_1]\f$ (§5); see
+/// the file comment. The bodies are any types with `at(t)` and `accelerationBound()`
+/// (`Moving<Shape>`, `DeformingSimplex`). Throws std::invalid_argument for a bad interval.
+template <typename MovingP, typename MovingQ>
+ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
+                                                 typename MovingP::Scalar t1,
+                                                 const ToiSettings<typename MovingP::Scalar>& settings = {},
+                                                 ToiTrace<typename MovingP::Scalar>* trace = nullptr) {
+  using S = typename MovingP::Scalar;
+  requireInterval(t0, t1, "timeOfImpact");
+  if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
+  const S tol = settings.collisionTolerance;
+  const S accelerationBound = S(P.accelerationBound()) + S(Q.accelerationBound());
+  ExtrusionSettings<S> extrusion;
+  extrusion.collisionTolerance = tol;
+  extrusion.variant = settings.variant;
+  extrusion.gjk = settings.gjk;
+
+  ToiResult<S> result;
+  auto completeTest = [&](S ta) {
+    const ExtrusionResult<S> test = extrusionTest(P, Q, ta, t1, extrusion);
+    ++result.gjkRuns;
+    result.sdEvaluations += test.sdEvaluations;
+    if (trace) trace->intervals.push_back({ta, test.status, test.distanceAtStart, test.separating});
+    return test;
+  };
+
+  // The first test over the whole interval.
+  S ta = t0;
+  ExtrusionResult<S> test = completeTest(ta);
+  switch (test.status) {
+    case ExtrusionStatus::NoCollision:
+      result.status = ToiStatus::NoCollision;
+      return result;
+    case ExtrusionStatus::NumericalFailure:
+      result.status = ToiStatus::NumericalFailure;
+      return result;
+    case ExtrusionStatus::IterationCap:
+      result.status = ToiStatus::IterationCap;
+      result.time = t0;
+      return result;
+    case ExtrusionStatus::CollidingAtStart: {
+      // Within the tolerance at t0. Along the closest direction n, the supporting distance
+      // is at least its smaller end value minus the margin over the interval (linear and
+      // per-vertex linear motion: minus nothing). If that stays positive, the bodies never
+      // touch: they are moving apart.
+      detail::takeContact(result, t0, test);
+      const S margin = extrusionMargin(settings.variant, t1 - t0, S(P.accelerationBound()), S(Q.accelerationBound()));
+      bool apart = false;
+      if (result.distance > S(0) && result.normal.squaredNorm() > S(0)) {
+        const S sd0 = supportingDistanceAt(P, Q, result.normal, t0);
+        const S sd1 = supportingDistanceAt(P, Q, result.normal, t1);
+        result.sdEvaluations += 2;
+        apart = sd0 > S(0) && sd1 >= sd0 && std::min(sd0, sd1) - margin > S(0);
+      }
+      result.status = apart ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
+      return result;
+    }
+    case ExtrusionStatus::Undecided: break;
+  }
+
+  // Brent on F(t) over [ta, t1], restarted on [tx, t1] after each complete test.
+  const S timeTolerance = settings.timeTolerance * (t1 - t0);
+  SeparatingVectors<S> vectors = test.separating;
+  S distanceAtTa = test.distanceAtStart;
+  ExtrusionResult<S> lastTest = test;  // the complete test at ta
+  // The approximate maximum supporting distance at t from the stored vectors (§5). The
+  // certified variant counts a vector only as far as it separates at both ta and t, less
+  // the margin over [ta, t]: positive then proves [ta, t] free of contact.
+  const bool certified = settings.variant == ExtrusionVariant::Certified;
+  auto marginOver = [&](S duration) { return certified ? duration * duration / S(8) * accelerationBound : S(0); };
+  auto approximateMaxSd = [&](S t) {
+    S best = -std::numeric_limits<S>::infinity();
+    const auto Pt = P.at(t);
+    const auto Qt = Q.at(t);
+    for (int k = 0; k < vectors.count; ++k) {
+      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k]);
+      best = std::max(best, certified ? std::min(sd, vectors.sdStart[k]) : sd);
+    }
+    result.sdEvaluations += vectors.count;
+    return best - marginOver(t - ta);
+  };
+  // The same at t1, from the values the complete test stored.
+  auto approximateMaxSdAtEnd = [&] {
+    S best = -std::numeric_limits<S>::infinity();
+    for (int k = 0; k < vectors.count; ++k)
+      best = std::max(best, certified ? std::min(vectors.sdEnd[k], vectors.sdStart[k]) : vectors.sdEnd[k]);
+    return best - marginOver(t1 - ta);
+  };
+
+  for (;;) {
+    // F(ta) = exact distance - tol > 0; F(t1) = approximate max SD at t1 - margin - tol <= 0.
+    // (Without any stored vector the approximation is -infinity; -tol stands in for it.)
+    const S fHigh = std::min(approximateMaxSdAtEnd() - tol, S(0));
+    const S fLow = distanceAtTa - tol;
+    BrentStepper<S> brent(ta, fLow, t1, std::isfinite(fHigh) ? fHigh : -tol, timeTolerance);
+    bool restarted = false;
+    while (!restarted) {
+      if (brent.converged()) {
+        // The contact time is bracketed within the time tolerance just after ta, the last
+        // time proven free of contact, where the distance is within round-off of tol.
+        result.status = ToiStatus::Hit;
+        detail::takeContact(result, ta, lastTest);
+        return result;
+      }
+      if (result.brentIterations >= settings.maxIterations) {
+        result.status = ToiStatus::IterationCap;
+        detail::takeContact(result, ta, lastTest);
+        return result;
+      }
+      const S tx = brent.next();
+      ++result.brentIterations;
+      const S approx = vectors.count > 0 ? approximateMaxSd(tx) : S(0);
+      ToiStep<S> step{tx, approx, ta, std::max(brent.root(), brent.counterpart()), brent.nextKind(), approx > S(0)};
+      if (trace) trace->steps.push_back(step);
+      if (!(approx > S(0))) {  // negative: no stored vector separates at tx; keep iterating
+        brent.update(approx - tol);
+        continue;
+      }
+      // Positive: [ta, tx] is free of contact; the complete test on [tx, t1] decides.
+      ++result.restarts;
+      const ExtrusionResult<S> next = completeTest(tx);
+      switch (next.status) {
+        case ExtrusionStatus::NoCollision:
+          result.status = ToiStatus::PhotoFinish;
+          return result;
+        case ExtrusionStatus::CollidingAtStart:  // exact distance at tx within the tolerance
+          result.status = ToiStatus::Hit;
+          detail::takeContact(result, tx, next);
+          return result;
+        case ExtrusionStatus::NumericalFailure:
+          result.status = ToiStatus::NumericalFailure;
+          return result;
+        case ExtrusionStatus::IterationCap:
+          result.status = ToiStatus::IterationCap;
+          detail::takeContact(result, ta, lastTest);
+          return result;
+        case ExtrusionStatus::Undecided:
+          ta = tx;
+          vectors = next.separating;
+          distanceAtTa = next.distanceAtStart;
+          lastTest = next;
+          restarted = true;
+          break;
+      }
+    }
+  }
+}
+
+}  // namespace gjkx
