@@ -180,6 +180,19 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
     return result;
   };
 
+  // The origin is in the simplex, or within round-off of it (relative to its own size).
+  auto overlaps = [&](const Simplex<S>& x) {
+    if (x.size == 4) return true;
+    S wMax = S(0);
+    for (int k = 0; k < x.size; ++k) wMax = std::max(wMax, x.vertices[k].w.norm());
+    return x.closestPoint().norm() <= settings.overlapTolerance * wMax;
+  };
+  auto contains = [](const Simplex<S>& x, const Vector3<S>& w) {
+    for (int k = 0; k < x.size; ++k)
+      if (x.vertices[k].w == w) return true;
+    return false;
+  };
+
   for (int i = 0; i < settings.maxIterations; ++i) {
     result.iterations = i + 1;
     const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
@@ -196,46 +209,50 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
     GjkStep step = GjkStep::Continue;
     if (sd > settings.separationThreshold) {
       step = GjkStep::SeparatingVector;  // a boolean query can stop at the first separating vector
-    } else {
-      if (warmSimplexPending) {  // re-ask the last simplex's supports at the new poses
-        warmSimplexPending = false;
-        for (int k = 0; k < cache->simplex.size; ++k) {
-          SimplexVertex<S> old = cache->simplex.vertices[k];
-          SupportHint hp = old.hintP, hq = old.hintQ;
-          const SimplexVertex<S> again = detail::supportPair(P, Q, old.s, hp, hq);
-          if (again.w.allFinite()) simplex.push(again);
-        }
-        if (simplex.size > 0) {
-          reduceToClosestFeature(simplex);
-          z = simplex.closestPoint();
-          md = z.norm();
-        }
+    } else if (warmSimplexPending) {
+      // Warm start: the last simplex, its supports re-asked at the new poses, plus w. Here
+      // s_0 is the remembered direction, not this simplex's z, so no stopping test below
+      // holds yet (a repeated w or a closed gap along s_0 says nothing about the new z):
+      // this iteration only builds the simplex, and the next, along its z, is a regular one.
+      warmSimplexPending = false;
+      for (int k = 0; k < cache->simplex.size; ++k) {
+        const SimplexVertex<S>& old = cache->simplex.vertices[k];
+        SupportHint hp = old.hintP, hq = old.hintQ;
+        const SimplexVertex<S> again = detail::supportPair(P, Q, old.s, hp, hq);
+        if (!again.w.allFinite()) return finish(GjkStatus::NumericalFailure);
+        simplex.push(again);
       }
-      bool duplicate = false;
-      for (int k = 0; k < simplex.size; ++k) duplicate = duplicate || simplex.vertices[k].w == v.w;
-      // The gap between the upper bound MD and the lower bound SD(s_i) closes: z is the
-      // closest point within the tolerance, and w would not move it.
-      if (simplex.size > 0 && (duplicate || md - sd <= settings.relativeTolerance * md)) {
-        step = GjkStep::Converged;
-      } else {
-        const Simplex<S> before = simplex;
+      reduceToClosestFeature(simplex);  // the last simplex may already hold the origin
+      if (!overlaps(simplex) && !contains(simplex, v.w)) {
         simplex.push(v);
         reduceToClosestFeature(simplex);
-        const Vector3<S> zNew = simplex.closestPoint();
-        const S mdNew = zNew.norm();
-        S wMax = S(0);
-        for (int k = 0; k < simplex.size; ++k) wMax = std::max(wMax, simplex.vertices[k].w.norm());
-        if (simplex.size == 4 || mdNew <= settings.overlapTolerance * wMax) {
-          z = zNew;
-          md = S(0);
-          step = GjkStep::Overlap;
-        } else if (!(mdNew < md)) {
-          simplex = before;  // "until this distance no longer decreases": keep the better simplex
-          step = GjkStep::Converged;
-        } else {
-          z = zNew;
-          md = mdNew;
-        }
+      }
+      z = simplex.closestPoint();
+      md = z.norm();
+      if (overlaps(simplex)) {
+        md = S(0);
+        step = GjkStep::Overlap;
+      }
+    } else if (simplex.size > 0 && (contains(simplex, v.w) || md - sd <= settings.relativeTolerance * md)) {
+      // The gap between the upper bound MD and the lower bound SD(s_i) is closed (or w is
+      // already in the simplex): z is the closest point within the tolerance.
+      step = GjkStep::Converged;
+    } else {
+      const Simplex<S> before = simplex;
+      simplex.push(v);
+      reduceToClosestFeature(simplex);
+      const Vector3<S> zNew = simplex.closestPoint();
+      const S mdNew = zNew.norm();
+      if (overlaps(simplex)) {
+        z = zNew;
+        md = S(0);
+        step = GjkStep::Overlap;
+      } else if (!(mdNew < md)) {
+        simplex = before;  // "until this distance no longer decreases": keep the better simplex
+        step = GjkStep::Converged;
+      } else {
+        z = zNew;
+        md = mdNew;
       }
     }
 

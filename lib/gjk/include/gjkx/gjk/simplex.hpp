@@ -20,6 +20,7 @@
 
 #include <gjkx/motion/vector.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -95,6 +96,24 @@ bool sameSign(S a, S b) {
   return (a > S(0) && b > S(0)) || (a < S(0) && b < S(0));
 }
 
+/// When may the signs be trusted? A volume within round-off of zero has signs that are
+/// noise. Rounding
+/// leaves a nearly collinear triangle or a nearly flat tetrahedron with a tiny volume
+/// of either sign; the sub-volumes may then all "agree" by chance, and the interior
+/// answer is a point of the simplex far from the closest one (needle tetrahedra 0.01
+/// from the origin were reported as containing it). Each signed volume is good to
+/// about \f$\epsilon\f$ times a product of lengths (triangle: its longest edge times its
+/// farthest vertex from the origin; tetrahedron: the farthest vertex cubed), so the
+/// barycentric coordinates are good to \f$\epsilon / r\f$, r the volume relative to that
+/// product. Below \f$r = \epsilon^{1/4}\f$ (where they would be good only to
+/// \f$\epsilon^{3/4}\f$, GJK's own tolerance) the signs are not trusted: every facet is
+/// searched, and the interior answer, if any, is kept only when it is nearer. Every
+/// candidate is a point of the simplex, so the nearest of them is never worse than any.
+template <typename S>
+S trustedVolumeRatio() {
+  return std::pow(std::numeric_limits<S>::epsilon(), S(0.25));
+}
+
 template <typename S>
 Feature<S> vertexFeature(const std::array<Vector3<S>, 4>& w, int a) {
   Feature<S> f;
@@ -153,6 +172,13 @@ template <typename S>
 Feature<S> triangle(const std::array<Vector3<S>, 4>& w, int a, int b, int c) {
   const Vector3<S> n = (w[b] - w[a]).cross(w[c] - w[a]);
   const S nn = n.squaredNorm();
+  // Is the area |n| well above its round-off, about epsilon * (longest edge) *
+  // (farthest vertex from the origin)? If not, its signs are noise (trustedVolumeRatio).
+  const S edge2 = std::max({(w[b] - w[a]).squaredNorm(), (w[c] - w[a]).squaredNorm(), (w[c] - w[b]).squaredNorm()});
+  const S far2 = std::max({w[a].squaredNorm(), w[b].squaredNorm(), w[c].squaredNorm()});
+  const S ratio = trustedVolumeRatio<S>();
+  const bool noisy = !(nn > ratio * ratio * edge2 * far2);
+  Feature<S> best;
   std::array<S, 3> C{S(0), S(0), S(0)};
   S muMax = S(0);
   if (nn > S(0)) {
@@ -167,19 +193,22 @@ Feature<S> triangle(const std::array<Vector3<S>, 4>& w, int a, int b, int c) {
     if (sameSign(muMax, C[0]) && sameSign(muMax, C[1]) && sameSign(muMax, C[2])) {
       Feature<S> f;
       f.keep = (1u << a) | (1u << b) | (1u << c);
-      f.lambda[a] = C[0] / muMax;
-      f.lambda[b] = C[1] / muMax;
-      f.lambda[c] = C[2] / muMax;
+      // Divide by the sum of the C_k (equal to n_I in exact arithmetic), so the lambda
+      // sum to 1 even when round-off has spoilt the C_k: z stays in the triangle.
+      const S sumC = C[0] + C[1] + C[2];
+      f.lambda[a] = C[0] / sumC;
+      f.lambda[b] = C[1] / sumC;
+      f.lambda[c] = C[2] / sumC;
       f.distanceSquared = distanceSquaredOf(w, f);
-      return f;
+      if (!noisy) return f;
+      best = f;  // a noisy interior answer is only a candidate: an edge may be nearer
     }
   }
   // The closest point is on an edge: search the edges opposite the disagreeing vertices
-  // (all three for a degenerate triangle, where muMax = 0).
+  // (all three for a degenerate triangle, where muMax = 0, or a noisy one).
   const std::array<int, 3> ids{a, b, c};
-  Feature<S> best;
   for (int k = 0; k < 3; ++k) {
-    if (sameSign(muMax, C[k])) continue;
+    if (!noisy && sameSign(muMax, C[k])) continue;
     const Feature<S> f = segment(w, ids[(k + 1) % 3], ids[(k + 2) % 3]);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }
@@ -201,16 +230,23 @@ Feature<S> tetrahedron(const std::array<Vector3<S>, 4>& w) {
   const std::array<S, 4> C{volume6(o, w[1], w[2], w[3]), volume6(w[0], o, w[2], w[3]),
                            volume6(w[0], w[1], o, w[3]), volume6(w[0], w[1], w[2], o)};
   const S detM = C[0] + C[1] + C[2] + C[3];
+  // The C_k are triple products of the w_k, good to about epsilon * (farthest vertex)^3;
+  // a volume not well above that is noise (trustedVolumeRatio).
+  S far2 = S(0);
+  for (int k = 0; k < 4; ++k) far2 = std::max(far2, w[k].squaredNorm());
+  const bool noisy = !(std::abs(detM) > trustedVolumeRatio<S>() * far2 * std::sqrt(far2));
+  Feature<S> best;
   if (sameSign(detM, C[0]) && sameSign(detM, C[1]) && sameSign(detM, C[2]) && sameSign(detM, C[3])) {
     Feature<S> f;
     f.keep = 0xFu;
     for (int k = 0; k < 4; ++k) f.lambda[k] = C[k] / detM;
     f.distanceSquared = S(0);
-    return f;
+    if (!noisy) return f;
+    f.distanceSquared = distanceSquaredOf(w, f);  // a noisy "inside" is only a candidate
+    best = f;
   }
-  Feature<S> best;
   for (int k = 0; k < 4; ++k) {
-    if (sameSign(detM, C[k])) continue;
+    if (!noisy && sameSign(detM, C[k])) continue;  // a noisy tetrahedron searches every face
     const Feature<S> f = triangle(w, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }

@@ -1,0 +1,115 @@
+// The supporting distance SD(P, Q, s) and the static intersection test (§2.3, §4).
+#include <gjkx/supporting_distance/intersection.hpp>
+#include <gjkx/supporting_distance/supporting_distance.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/support_mapping/polytope.hpp>
+#include <gjkx/support_mapping/primitives.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+using namespace gjkx;
+
+namespace {
+template <typename S>
+std::vector<Vector3<S>> circleDirections(int n) {
+  std::vector<Vector3<S>> dirs;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n;
+    dirs.emplace_back(S(std::cos(a)), S(std::sin(a)), S(0));
+  }
+  return dirs;
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("SD of two unit boxes two apart, by hand", "[sd][hand]", float, double) {
+  using S = TestType;
+  const Box<S> unit(Vector3<S>(S(0.5), S(0.5), S(0.5)));
+  const auto P = place(unit, Pose<S>::identity());
+  const auto Q = place(unit, Pose<S>::translate(Vector3<S>(2, 0, 0)));
+  // Along +x: the supporting planes are x = 0.5 (of P) and x = 1.5 (of Q): 1 apart, separating.
+  CHECK(supportingDistance(P, Q, Vector3<S>(1, 0, 0)) == Approx(1));
+  // Along -x: Q's plane at x = 2.5 and P's at -0.5 face the wrong way: -3, the union's width.
+  CHECK(supportingDistance(P, Q, Vector3<S>(-1, 0, 0)) == Approx(-3));
+  // Along +y: the slabs y in [-0.5, 0.5] coincide: -1, they overlap by the whole height.
+  CHECK(supportingDistance(P, Q, Vector3<S>(0, 1, 0)) == Approx(-1));
+  // SD is measured for the unit vector: scaling s changes nothing.
+  CHECK(supportingDistance(P, Q, Vector3<S>(7, 0, 0)) == Approx(1));
+  // Diagonal: planes through (0.5,0.5,0) and (1.5,-0.5,0) along (1,1,0)/sqrt 2: SD = 0.
+  CHECK(supportingDistance(P, Q, Vector3<S>(1, 1, 0)) == Approx(0).margin(1e-6));
+  // A zero direction separates nothing.
+  CHECK(supportingDistance(P, Q, Vector3<S>::Zero()) == -std::numeric_limits<S>::infinity());
+}
+
+TEST_CASE("maximum SD over directions: the distance when disjoint, minus the penetration when not (Fig. 3)",
+          "[sd][max]") {
+  const auto square = Polytope<double>::polygon(
+      {Vector3<double>(-1, -1, 0), Vector3<double>(1, -1, 0), Vector3<double>(1, 1, 0), Vector3<double>(-1, 1, 0)});
+  const auto dirs = circleDirections<double>(3600);
+  SECTION("disjoint: max SD = GJK's closest distance") {
+    const auto P = place(square, Pose<double>::identity());
+    const auto Q = place(square, Pose<double>::translate({3, 0.5, 0}));
+    const auto best = maximumSupportingDistance(P, Q, dirs);
+    const auto run = gjk(P, Q);
+    REQUIRE(run.status == GjkStatus::Separated);
+    CHECK(best.value == Approx(1.0).epsilon(1e-9));
+    CHECK(run.distance == Approx(best.value).epsilon(1e-9));
+    CHECK(best.direction.x() == Approx(1.0));
+  }
+  SECTION("overlapping by 0.25 along x: max SD = -0.25, the penetration depth") {
+    const auto P = place(square, Pose<double>::identity());
+    const auto Q = place(square, Pose<double>::translate({1.75, 0.5, 0}));
+    const auto best = maximumSupportingDistance(P, Q, dirs);
+    CHECK(best.value == Approx(-0.25).epsilon(1e-9));
+    CHECK(gjk(P, Q).status == GjkStatus::Overlapping);
+  }
+}
+
+TEMPLATE_TEST_CASE("the static test: disjoint, intersecting, and within the collision tolerance", "[sd][static]",
+                   float, double) {
+  using S = TestType;
+  const S tol = defaultCollisionTolerance<S>();
+  CHECK(tol == Approx(std::sqrt(std::numeric_limits<S>::epsilon())));
+  const Box<S> unit(Vector3<S>(S(0.5), S(0.5), S(0.5)));
+  const auto P = place(unit, Pose<S>::identity());
+  auto at = [&](S gap) { return place(unit, Pose<S>::translate(Vector3<S>(S(1) + gap, S(0.1), S(0.2)))); };
+
+  const auto apart = intersect(P, at(S(0.5)));
+  REQUIRE(apart.status == IntersectionStatus::Disjoint);
+  // The vector returned really separates: its SD exceeds the tolerance.
+  CHECK(supportingDistance(P, at(S(0.5)), apart.separatingVector) > tol);
+  CHECK(apart.supportingDistance > tol);
+
+  CHECK(intersect(P, at(S(-0.25))).status == IntersectionStatus::Intersecting);   // overlapping
+  CHECK(intersect(P, at(S(0.5) * tol)).status == IntersectionStatus::Intersecting);  // closer than the tolerance
+  CHECK(intersect(P, at(S(4) * tol)).status == IntersectionStatus::Disjoint);      // farther than it
+}
+
+TEST_CASE("the static test stops at the first separating vector (Fig. 2 scene)", "[sd][static][fig2]") {
+  using V = Vector3<double>;
+  const auto P = Polytope<double>::polygon({V(0, 0, 0), V(5, 0, 0), V(6, 6, 0), V(0, 5, 0)});
+  const auto Q = Polytope<double>::polygon({V(11, 3, 0), V(12, 3, 0), V(14, 5, 0), V(9, 9, 0), V(10, 5, 0)});
+  IntersectionSettings<double> settings;
+  settings.gjk.initialDirection = V(0, -1, 0);
+  const auto boolean = intersect(P, Q, settings);
+  // s_0 = (0,-1) has SD = -9; s_1 = (9,9) has SD = sqrt 2 > tolerance: stop after 2 iterations,
+  // where the distance query needs 6 (see test_gjk_figure2_steps.cpp).
+  REQUIRE(boolean.status == IntersectionStatus::Disjoint);
+  CHECK(boolean.iterations == 2);
+  CHECK(boolean.supportingDistance == Approx(std::sqrt(2.0)));
+  CHECK(boolean.separatingVector.isApprox(V(1, 1, 0).normalized()));
+}
+
+TEST_CASE("a warm-started static test finds the remembered separating vector at once", "[sd][static][warm]") {
+  const Box<double> unit(Vector3<double>(0.5, 0.5, 0.5));
+  const auto P = place(unit, Pose<double>::identity());
+  GjkCache<double> cache;
+  const auto first = intersect(P, place(unit, Pose<double>::translate({1.5, 0.3, 0})), {}, &cache);
+  REQUIRE(first.status == IntersectionStatus::Disjoint);
+  // Q moves a little: the last separating vector still separates, one support query each.
+  const auto second = intersect(P, place(unit, Pose<double>::translate({1.49, 0.31, 0.01})), {}, &cache);
+  REQUIRE(second.status == IntersectionStatus::Disjoint);
+  CHECK(second.iterations == 1);
+}
