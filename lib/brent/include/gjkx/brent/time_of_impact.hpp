@@ -19,15 +19,31 @@
 /// is where the bodies come within the tolerance. \f$F(t_a) > 0\f$ (the exact distance at
 /// \f$t_a\f$ exceeds the tolerance) and \f$F(t_1) \le 0\f$ (the extrusion test failed), so it is
 /// a bracket. At each iterate \f$t_x\f$:
-/// - approximate maximum SD \f$\le 0\f$: no stored vector separates at \f$t_x\f$; Brent goes on;
-/// - positive: \f$[t_a, t_x]\f$ is free of contact; a complete extrusion test on \f$[t_x, t_1]\f$
-///   then either succeeds (a *photo finish*: no collision, proven on a chain of intervals),
-///   finds the bodies within the tolerance at \f$t_x\f$ (the *time of impact*: "the maximum
-///   supporting distance is positive and smaller than the collision tolerance"), or
-///   fails again, and Brent restarts on \f$[t_x, t_1]\f$ with the new vectors.
-/// When Brent's bracket shrinks below the time tolerance, the last time proven free of
-/// contact, \f$t_a\f$, is the time of impact (the distance there is within round-off of the
-/// tolerance). Every reported time is one at which the bodies do not interpenetrate.
+/// - approximate maximum SD below the tolerance (\f$F(t_x) < 0\f$): no stored vector
+///   separates at \f$t_x\f$ by the tolerance; Brent goes on;
+/// - at least the tolerance (\f$F(t_x) \ge 0\f$): \f$[t_a, t_x]\f$ is free of contact; a complete
+///   extrusion test on \f$[t_x, t_1]\f$ then either succeeds (a *photo finish*: no collision,
+///   proven on a chain of intervals), finds the bodies within the tolerance at \f$t_x\f$ (the
+///   *time of impact*: "the maximum supporting distance is positive and smaller than the
+///   collision tolerance"), or fails again, and Brent restarts on \f$[t_x, t_1]\f$ with the
+///   new vectors.
+/// "Positive" is read here as the extrusion test reads it (extrusion_test.hpp): above the
+/// collision tolerance. A stored vector \f$\vec{s}_k\f$ has \f$SD > \mathrm{tol}\f$ at \f$t_a\f$; if its SD
+/// is also \f$\ge \mathrm{tol}\f$ at \f$t_x\f$, then (linear in t for linear motion, concave for per-vertex
+/// linear motion, within the margin of the chord for the certified variant) it stays
+/// \f$\ge \mathrm{tol}\f$ on all of \f$[t_a, t_x]\f$: the bodies do not come within the tolerance
+/// there. Merely positive (between 0 and tol) would prove only that they do not
+/// interpenetrate: a pass within the tolerance between \f$t_a\f$ and \f$t_x\f$ would then go
+/// unseen (a photo finish if the bodies are apart again at \f$t_x\f$), and a hit at \f$t_x\f$
+/// could come long after the bodies first came within the tolerance, for a slow grazing
+/// approach (both found by tests/brent/test_time_of_impact.cpp on grazing passes).
+/// When Brent's bracket \f$[t_a, t_b]\f$ shrinks below the time tolerance, the time of impact is
+/// \f$t_b\f$ if the stored vectors still separate there (approximate maximum SD > 0) and the
+/// exact distance there is within the tolerance (the paper's criterion above), else the
+/// last time proven free of contact, \f$t_a\f$ (the distance there exceeds the tolerance by at
+/// most what the bodies move in one time tolerance, plus GJK's own uncertainty). Every
+/// reported time is one at which the bodies do not interpenetrate, and no later than the
+/// first time they come within the tolerance (plus the time tolerance).
 #pragma once
 
 #include <gjkx/brent/root_finder.hpp>
@@ -100,7 +116,7 @@ struct ToiStep {
   S bracketHigh = S(0);
   /// The rule that chose \f$t_x\f$.
   BrentStepKind kind = BrentStepKind::Bisection;
-  /// True when the approximate maximum was positive and a complete extrusion test followed.
+  /// True when the approximate maximum was at least the tolerance and a complete extrusion test followed.
   bool completeTest = false;
 };
 
@@ -134,7 +150,9 @@ struct ToiResult {
   /// The time of impact when `Hit` (\f$t_0\f$ for `StartsPenetrating`); for a cap, the last
   /// time proven free of contact.
   S time = S(0);
-  /// The closest distance at `time` (at most the tolerance for a hit, up to round-off).
+  /// The closest distance at `time`: for a hit, at most the tolerance (up to round-off), or,
+  /// when the hit is reported at the last time proven free of contact (see the file
+  /// comment), at most the tolerance plus what the bodies move in one time tolerance.
   S distance = S(0);
   /// Unit contact normal at `time`, from P towards Q.
   Vector3<S> normal = Vector3<S>::Zero();
@@ -263,9 +281,21 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
     bool restarted = false;
     while (!restarted) {
       if (brent.converged()) {
-        // The contact time is bracketed within the time tolerance just after ta, the last
-        // time proven free of contact, where the distance is within round-off of tol.
+        // The contact time is bracketed within the time tolerance between ta, the last time
+        // proven free of contact, and tb, where F < 0. If the stored vectors still prove the
+        // bodies apart at tb (approximate maximum SD > 0) and the exact distance there is
+        // within the tolerance, tb is the paper's time of impact ("its maximum supporting
+        // distance is positive and smaller than the collision tolerance"). Otherwise ta is,
+        // where the distance exceeds tol by at most what the bodies move in one time tolerance.
         result.status = ToiStatus::Hit;
+        const S tb = brent.root() == ta ? brent.counterpart() : brent.root();
+        if (tb > ta && vectors.count > 0 && approximateMaxSd(tb) > S(0)) {
+          const ExtrusionResult<S> atEnd = completeTest(tb);
+          if (atEnd.status == ExtrusionStatus::CollidingAtStart) {
+            detail::takeContact(result, tb, atEnd);
+            return result;
+          }
+        }
         detail::takeContact(result, ta, lastTest);
         return result;
       }
@@ -277,13 +307,17 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       const S tx = brent.next();
       ++result.brentIterations;
       const S approx = vectors.count > 0 ? approximateMaxSd(tx) : S(0);
-      ToiStep<S> step{tx, approx, ta, std::max(brent.root(), brent.counterpart()), brent.nextKind(), approx > S(0)};
+      // "Positive" means at least the tolerance (F(tx) >= 0), not merely above 0: only then
+      // are the bodies proven no closer than the tolerance on all of [ta, tx] (see the
+      // file comment). Between 0 and tol, Brent goes on with F(tx) < 0.
+      const bool separates = approx >= tol;
+      ToiStep<S> step{tx, approx, ta, std::max(brent.root(), brent.counterpart()), brent.nextKind(), separates};
       if (trace) trace->steps.push_back(step);
-      if (!(approx > S(0))) {  // negative: no stored vector separates at tx; keep iterating
+      if (!separates) {  // no stored vector separates at tx by the tolerance; keep iterating
         brent.update(approx - tol);
         continue;
       }
-      // Positive: [ta, tx] is free of contact; the complete test on [tx, t1] decides.
+      // At least the tolerance: [ta, tx] is free of contact; the complete test on [tx, t1] decides.
       ++result.restarts;
       const ExtrusionResult<S> next = completeTest(tx);
       switch (next.status) {

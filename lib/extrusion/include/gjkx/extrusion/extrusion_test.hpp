@@ -94,8 +94,10 @@ struct SeparatingVectors {
   std::array<S, kCapacity> sdEnd{};
   /// How many are held.
   int count = 0;
-  /// Adds a vector, or replaces the weakest when full.
+  /// Adds a vector (once), or replaces the weakest when full.
   void add(const Vector3<S>& s, S sd0, S sd1) {
+    for (int k = 0; k < count; ++k)
+      if (vectors[k] == s) return;  // GJK may repeat a direction: keep it once
     int slot = count;
     if (count == kCapacity) {
       slot = 0;
