@@ -1,0 +1,402 @@
+// Chapter 04: the extrusion test (§1, §3), Figs. 1 and 4 of the paper.
+//
+// §1 sorts the intersection tests of two bodies over a time interval [t_0, t_1] into
+// three kinds: static, sweeping and extrusion. §3 builds the extrusion test on GJK:
+// "we determine whether the separating space ever vanishes in the interim by testing
+// whether the spaces at t_0 and t_1 are disjoint". The bodies are polygons in the plane
+// z = 0 moving over [0, 1]. Every verdict drawn is the library's (staticTest,
+// sweepingTest, extrusionTest and the §5 solver timeOfImpact); a verdict is marked
+// right or wrong against staticTest at 4001 instants, dense enough for these motions.
+#include "../chapter.hpp"
+
+#include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/extrusion/extrusion_test.hpp>
+#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/render/canvas.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/support_mapping/polytope.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace gjkx;
+using namespace gjkx::render;
+using V = Vector3<double>;
+using P2 = Eigen::Vector2d;
+using Body = Moving<Polytope<double>>;
+using chapter::xy;
+
+namespace {
+
+constexpr double t0 = 0, t1 = 1;
+constexpr int kDirections = 1440;    // directions on the unit circle: a quarter degree apart
+constexpr int kTruthSamples = 4001;  // instants of the reference static test
+const Color right = palette::direction, wrong = palette::penetration;
+const Color atStart = palette::highlight, atEnd = palette::trajectory;  // the separating space at t_0, t_1
+
+std::string fixed(double x, int digits = 2) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
+  return buffer;
+}
+
+V direction(int k) { return V(std::cos(2 * M_PI * k / kDirections), std::sin(2 * M_PI * k / kDirections), 0); }
+
+std::vector<V> box(double w, double h) {
+  return {V(-w / 2, -h / 2, 0), V(w / 2, -h / 2, 0), V(w / 2, h / 2, 0), V(-w / 2, h / 2, 0)};
+}
+Motion<double> glide(const V& start, const V& velocity) {
+  return Motion<double>::constantVelocity(Pose<double>::translate(start), velocity);
+}
+Body body(const std::vector<V>& corners, const Motion<double>& motion) {
+  return moving(Polytope<double>::polygon(corners), motion);
+}
+
+// Two moving bodies, the side of each that its labels go to, and the world window.
+struct Pair {
+  Body P, Q;
+  V sideP, sideQ;
+  double xmin, xmax, ymin, ymax;
+};
+
+// A body at time t: faint (in between), outlined (t_0), filled (t_1), or at the time of impact.
+enum class Look { Faint, Start, End, Impact };
+void drawBody(Canvas& c, const Body& b, double t, bool isP, Look look) {
+  const Color stroke = isP ? palette::bodyPStroke : palette::bodyQStroke;
+  const Color fill = isP ? palette::bodyPFill : palette::bodyQFill;
+  ShapeStyle shape{fill, Stroke{stroke, style::lineThin}};
+  if (look == Look::Faint) shape = ShapeStyle{fill.withAlpha(0.07), Stroke{stroke.withAlpha(0.3), 1.0}};
+  if (look == Look::Start) shape.fill = palette::none;
+  if (look == Look::Impact) shape = ShapeStyle{palette::highlight.withAlpha(0.45), Stroke{stroke, style::lineThick}};
+  std::vector<P2> outline;
+  for (const V& v : b.shape.vertices()) outline.push_back(xy(b.at(t).worldFromBody(v)));
+  c.polygon(outline, shape);
+}
+
+// The path of a body's centre from t_0 to t_1, and its labels X(t_0) and X(t_1).
+void drawMotion(Canvas& c, const Body& b, const std::string& name, const V& side, bool isP) {
+  const TextStyle label{Font::Math, style::labelSize, isP ? palette::bodyPStroke : palette::bodyQStroke, 2.5};
+  std::vector<P2> path;
+  for (int k = 0; k <= 20; ++k) path.push_back(xy(b.at(t0 + (t1 - t0) * k / 20).center()));
+  if ((path.back() - path.front()).norm() < 1e-9) {  // at rest: one label
+    c.text(xy(b.at(t0).support(side)), name, label, chapter::toward(xy(side)));
+    return;
+  }
+  c.arrow(path[19], path[20], style::trajectoryStroke);
+  path.pop_back();
+  c.polyline(path, style::trajectoryStroke);
+  c.text(xy(b.at(t0).support(side)), name + "(t_0)", label, chapter::toward(xy(side)));
+  c.text(xy(b.at(t1).support(side)), name + "(t_1)", label, chapter::toward(xy(side)));
+}
+
+// Both bodies at t_0 and t_1, `between` - 1 faint poses in between, and their motions.
+void drawPair(Canvas& c, const Pair& pair, int between) {
+  c.setWorldWindow(pair.xmin, pair.xmax, pair.ymin, pair.ymax);
+  c.setClip(c.plotArea());
+  for (int k = 1; k < between; ++k)
+    for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t0 + (t1 - t0) * k / between, b == &pair.P, Look::Faint);
+  for (const auto& [t, look] : {std::pair{t0, Look::Start}, std::pair{t1, Look::End}})
+    for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t, b == &pair.P, look);
+  drawMotion(c, pair.P, "P", pair.sideP, true);
+  drawMotion(c, pair.Q, "Q", pair.sideQ, false);
+}
+
+// The line normal to the unit s halfway between P(t) and Q(t), near them: a separating line when SD > 0.
+void drawSeparatingLine(Canvas& c, const Pair& pair, const V& s, double t, const std::string& name) {
+  const double offset = 0.5 * (s.dot(pair.P.support(s, t)) + s.dot(pair.Q.support(-s, t)));
+  const P2 foot = offset * xy(s), along(-s.y(), s.x());
+  const P2 middle = foot + along * along.dot(0.5 * (xy(pair.P.at(t).center()) + xy(pair.Q.at(t).center())) - foot);
+  c.line(middle - 1.8 * along, middle + 1.8 * along, Stroke{palette::ink, 1.2, style::dashed});
+  c.text(middle + 1.8 * along, name, TextStyle{Font::Math, style::labelSize, palette::ink, 2.5}, chapter::toward(along));
+}
+
+// What the extrusion test found: the separating vector, as a separating line at t_0 and at
+// t_1; or, after the §5 solver, both bodies at the time of impact and the contact normal.
+void drawFound(Canvas& c, const Pair& pair, const ExtrusionResult<double>& test, const ToiResult<double>& toi) {
+  if (test.status == ExtrusionStatus::NoCollision) {
+    drawSeparatingLine(c, pair, test.separatingVector, t0, "t_0");
+    drawSeparatingLine(c, pair, test.separatingVector, t1, "t_1");
+  }
+  if (toi.status != ToiStatus::Hit) return;
+  drawBody(c, pair.P, toi.time, true, Look::Impact);
+  drawBody(c, pair.Q, toi.time, false, Look::Impact);
+  const P2 tip = xy(toi.witnessP) + 1.1 * xy(toi.normal);
+  c.arrow(xy(toi.witnessP), tip, Stroke{palette::ink, style::lineThick});
+  c.point(xy(toi.witnessP), palette::witness, 4);
+  c.text(tip, "n", TextStyle{Font::Math, style::labelSize, palette::ink, 2.5}, chapter::toward(xy(toi.normal)));
+}
+
+// Panel (col, row) of a grid of w x h cells, less a band of `band` pixels below it for the verdicts.
+void panel(Canvas& c, int col, int row, int w, int h, int band, const std::string& title) {
+  c.setPanel({col * w, row * h, w, h - band});
+  c.title(title);
+}
+
+// A verdict in the band below the panel (made the current panel: labels are clipped to
+// theirs): green with a tick when right, red with a cross when wrong; a gray note below.
+void verdict(Canvas& c, const std::string& text, bool isRight, int band, const std::string& note = "") {
+  const PixelRect p = c.panel();
+  c.setPanel({p.x, p.y + p.height, p.width, band}, 0, 0);
+  c.textAtPixel(p.x + p.width / 2.0, p.y + p.height + 12, text + (isRight ? "  \u2713" : "  \u2717"),
+                TextStyle{Font::SansBold, 14, isRight ? right : wrong, 3.0}, Anchor::Center);
+  if (!note.empty())
+    c.textAtPixel(p.x + p.width / 2.0, p.y + p.height + 32, note, TextStyle{Font::Sans, 12, palette::separating, 3.0});
+}
+
+std::string said(bool collision) { return collision ? "collision" : "no collision"; }
+// What a verdict is, said against the reference: right, missed, or a false alarm.
+std::string judged(bool reported, bool truth) {
+  return reported == truth ? " \u2014 right" : (reported ? " \u2014 false alarm" : " \u2014 missed");
+}
+// The §3 test's status, then the §5 solver's, for standard output.
+std::string statuses(const ExtrusionResult<double>& test, const ToiResult<double>& toi) {
+  return std::string(toString(test.status)) + " -> " + toString(toi.status) +
+         (toi.status == ToiStatus::Hit ? " at t = " + fixed(toi.time, 4) : "");
+}
+bool collides(const Pair& pair) { return staticTest(pair.P, pair.Q, t0, t1, kTruthSamples); }
+
+// The §3 test, then the §5 solver when the test is undecided; its verdict in words.
+std::string solverVerdict(const ExtrusionResult<double>& test, const ToiResult<double>& toi) {
+  if (test.status == ExtrusionStatus::NoCollision) return "extrusion: no collision";
+  if (toi.status == ToiStatus::Hit) return "extrusion + \u00a75: collision at t = " + fixed(toi.time, 3);
+  if (toi.status == ToiStatus::PhotoFinish) return "extrusion + \u00a75: no collision (photo finish)";
+  return std::string("extrusion + \u00a75: ") + toString(toi.status);
+}
+
+// ---- Fig. 1: "Examples of intersection tests over time" ----------------------------
+// "Static intersection tests check for intersection at specific instances in time [...]
+// they may have actually passed straight through each other" (row A, left). "Sweeping
+// intersection tests [...] conservatively report false alarms that never actually occur,
+// because they do not account for the displacement of objects as they move" (row B,
+// middle). "Extrusion intersection tests take a four-dimensional approach to detect
+// spacio-temporal intersection directly, without misses or false alarms" (right column).
+void figure1(const std::string& out, const Pair& passThrough, const Pair& crossing) {
+  const int W = 430, H = 350;
+  Canvas c(3 * W, 2 * H);
+  std::string summary = "Fig. 1:";
+  const std::pair<const Pair*, std::string> rows[] = {{&passThrough, "(A) pass-through"}, {&crossing, "(B) crossing paths"}};
+  for (int row = 0; row < 2; ++row) {
+    const Pair& pair = *rows[row].first;
+    const bool truth = collides(pair);
+    // Static: the bodies at t_0 and t_1 only.
+    panel(c, 0, row, W, H, 30, rows[row].second + ": static test at t_0 and t_1");
+    drawPair(c, pair, 1);
+    const bool atEnds = staticTest(pair.P, pair.Q, t0, t1, 2);
+    verdict(c, "static: " + said(atEnds) + judged(atEnds, truth), atEnds == truth, 30);
+    // Sweeping: the swept hulls conv(X(t_0) \cup X(t_1)).
+    panel(c, 1, row, W, H, 30, rows[row].second + ": sweeping test");
+    c.setWorldWindow(pair.xmin, pair.xmax, pair.ymin, pair.ymax);
+    c.setClip(c.plotArea());
+    for (const Body* b : {&pair.P, &pair.Q}) {
+      std::vector<V> corners;
+      for (double t : {t0, t1})
+        for (const V& v : b->shape.vertices()) corners.push_back(b->at(t).worldFromBody(v));
+      const bool isP = b == &pair.P;
+      c.polygon(xy(Polytope<double>::polygon(corners).vertices()),
+                ShapeStyle{isP ? palette::bodyPFill : palette::bodyQFill,
+                           Stroke{isP ? palette::bodyPStroke : palette::bodyQStroke, 1.0, style::dashed}});
+    }
+    drawPair(c, pair, 1);
+    const bool swept = sweepingTest(pair.P, pair.Q, t0, t1).status != IntersectionStatus::Disjoint;
+    verdict(c, "sweeping: " + said(swept) + judged(swept, truth), swept == truth, 30);
+    // Extrusion: the §3 test, then the §5 solver when it is undecided.
+    panel(c, 2, row, W, H, 30, rows[row].second + ": extrusion test");
+    drawPair(c, pair, 8);
+    const auto test = extrusionTest(pair.P, pair.Q, t0, t1);
+    const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1);
+    drawFound(c, pair, test, toi);
+    const bool extruded = reportsCollision(toi.status);
+    verdict(c, solverVerdict(test, toi) + judged(extruded, truth), extruded == truth, 30);
+    summary += std::string(" ") + "AB"[row] + ": reference " + said(truth) + ", static " + said(atEnds) + ", sweeping " +
+               said(swept) + ", extrusion " + statuses(test, toi) + (row == 0 ? ";" : "");
+  }
+  c.savePng(out + "/fig01-intersection-tests.png");
+  chapter::wrote(out + "/fig01-intersection-tests.png");
+  std::printf("%s\n", summary.c_str());
+}
+
+// ---- Fig. 4: "Extrusion tests robustly give correct results" -----------------------
+// "this extrusion test combines the complementary merits of both static and sweeping
+// tests, and performs better for a broad scope of rigid body motion (Fig. 4)". Four
+// motions, each decided by the extrusion test followed by the §5 solver: (a) a stack of
+// blocks in free fall ("even over miniscule time intervals their swept volumes intersect,
+// although the blocks themselves never come into contact"), (b) a head-on collision,
+// (c) a glancing near miss, (d) one body overtaking another.
+void figure4(const std::string& out, const std::vector<std::pair<Pair, std::string>>& panels) {
+  const int W = 520, H = 400;
+  Canvas c(2 * W, 2 * H);
+  std::string summary = "Fig. 4:";
+  for (std::size_t k = 0; k < panels.size(); ++k) {
+    const Pair& pair = panels[k].first;
+    panel(c, int(k % 2), int(k / 2), W, H, 50, panels[k].second);
+    drawPair(c, pair, 6);
+    const auto test = extrusionTest(pair.P, pair.Q, t0, t1);
+    const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1);
+    drawFound(c, pair, test, toi);
+    const bool truth = collides(pair), extruded = reportsCollision(toi.status);
+    std::string text = solverVerdict(test, toi);  // a photo finish: a chain of restarts + 1 intervals
+    if (toi.status == ToiStatus::PhotoFinish) text += ", " + std::to_string(toi.restarts + 1) + " intervals";
+    const bool atEnds = staticTest(pair.P, pair.Q, t0, t1, 2);
+    const bool swept = sweepingTest(pair.P, pair.Q, t0, t1).status != IntersectionStatus::Disjoint;
+    verdict(c, text + judged(extruded, truth), extruded == truth, 50,
+            "for comparison: static " + said(atEnds) + judged(atEnds, truth) + ",  sweeping " + said(swept) +
+                judged(swept, truth));
+    summary += std::string(" (") + "abcd"[k] + ") " + statuses(test, toi) + ", reference " + said(truth) +
+               (k + 1 < panels.size() ? ";" : "");
+  }
+  c.savePng(out + "/fig04-extrusion-correct.png");
+  chapter::wrote(out + "/fig04-extrusion-correct.png");
+  std::printf("%s\n", summary.c_str());
+}
+
+// ---- The separating space at t_0 and t_1 (§3) --------------------------------------
+// "Consider the space defined by all separating vectors between P(t_0) and Q(t_0). [...]
+// if P and Q intersect at t_0, this space is null, otherwise it is an open pyramid
+// extending away from the origin. [...] we determine whether the separating space ever
+// vanishes in the interim by testing whether the spaces at t_0 and t_1 are disjoint."
+// In the plane the pyramid is a wedge of directions: the arc of the unit circle where
+// SD > 0. GJK's s_i at t_0 are tried in turn; one in both arcs proves no collision.
+
+// The arcs of radius r over the runs of sampled directions where `inside` holds.
+std::vector<std::vector<P2>> arcs(const std::vector<bool>& inside, double r) {
+  const int n = int(inside.size());
+  int outside = 0;  // start the scan outside every arc (n when every direction is inside)
+  while (outside < n && inside[outside]) ++outside;
+  std::vector<std::vector<P2>> found;
+  for (int j = 0; j < n; ++j) {
+    const int k = (outside + 1 + j) % n;
+    if (!inside[k]) continue;
+    if (j == 0 || !inside[(k + n - 1) % n]) found.emplace_back();
+    found.back().push_back(r * xy(direction(k)));
+  }
+  return found;
+}
+
+// The wedges of the directions where `inside` holds, filled, with their arcs.
+void drawWedges(Canvas& c, const std::vector<bool>& inside, double radius, const Color& color) {
+  for (const auto& arc : arcs(inside, radius)) {
+    std::vector<P2> wedge{P2(0, 0)};
+    wedge.insert(wedge.end(), arc.begin(), arc.end());
+    c.polygon(wedge, ShapeStyle{color.withAlpha(0.2), style::noStroke});
+    c.polyline(arc, Stroke{color, 5});
+  }
+}
+
+std::string degrees(const std::vector<bool>& inside) {
+  return std::to_string(std::lround(360.0 * std::count(inside.begin(), inside.end(), true) / kDirections)) + "\u00b0";
+}
+
+// The directions panel: SD(t_0, s) > 0 and SD(t_1, s) > 0 on the unit circle, and GJK's s_i at t_0.
+std::string drawSpace(Canvas& c, const Pair& pair, const ExtrusionTrace<double>& trace) {
+  c.setWorldWindow(-1.45, 1.45, -1.6, 1.4);
+  c.axes();
+  std::vector<bool> start(kDirections), end(kDirections), both(kDirections);
+  for (int k = 0; k < kDirections; ++k) {
+    start[k] = supportingDistanceAt(pair.P, pair.Q, direction(k), t0) > 0;
+    end[k] = supportingDistanceAt(pair.P, pair.Q, direction(k), t1) > 0;
+    both[k] = start[k] && end[k];
+  }
+  c.circle({0, 0}, 1, ShapeStyle{palette::none, style::axisStroke});
+  drawWedges(c, start, 1.0, atStart);
+  drawWedges(c, end, 1.08, atEnd);
+  for (const auto& arc : arcs(both, 0.92)) {  // the overlap: the vectors that separate over [t_0, t_1]
+    c.line({0, 0}, arc.front(), Stroke{right, style::lineThin});
+    c.line({0, 0}, arc.back(), Stroke{right, style::lineThin});
+    c.polyline(arc, Stroke{right, 5});
+  }
+  // GJK's s_i at t_0 on the circle: hollow gray where SD(t_0) <= 0, orange where only
+  // SD(t_0) > 0, green where both; one label for directions a few degrees apart.
+  std::vector<std::pair<V, std::string>> labels;
+  for (const auto& step : trace.steps) {
+    const Color color = step.separatesEnd ? right : (step.separatesStart ? atStart : palette::separating);
+    c.point(xy(step.s), step.separatesStart ? color : palette::background, 5.5, Stroke{color, 2});
+    const std::string name = "s_" + std::to_string(step.i);
+    if (!labels.empty() && labels.back().first.dot(step.s) > std::cos(0.15)) labels.back().second += ", " + name;
+    else labels.push_back({step.s, name});
+  }
+  for (const auto& [s, name] : labels)
+    c.text(1.16 * xy(s), name, TextStyle{Font::Math, style::labelSize, palette::ink, 2.5}, chapter::toward(xy(s)));
+  const PixelRect p = c.panel();
+  const std::pair<Color, std::string> legend[] = {
+      {atStart, "SD(t_0, s) > 0: " + degrees(start)}, {atEnd, "SD(t_1, s) > 0: " + degrees(end)}, {right, "both: " + degrees(both)}};
+  for (int k = 0; k < 3; ++k)
+    c.textAtPixel(p.x + 16, p.y + p.height - 58 + 20 * k, legend[k].second,
+                  TextStyle{Font::Sans, 13, legend[k].first, 2.5}, Anchor::Right);
+  return degrees(start) + " at t_0, " + degrees(end) + " at t_1, overlap " + degrees(both);
+}
+
+// Top: a pair that misses, whose spaces at t_0 and t_1 overlap; bottom: one that collides,
+// whose spaces are disjoint (for it the §5 solver finds the time of impact).
+void separatingSpace(const std::string& out, const Pair& apart, const Pair& hitting) {
+  const int W = 460, H = 430;
+  Canvas c(2 * W, 2 * H);
+  std::string summary = "separating space:";
+  const std::pair<const Pair*, std::string> rows[] = {{&apart, "no collision"}, {&hitting, "collision"}};
+  ExtrusionSettings<double> settings;
+  settings.gjk.initialDirection = V(0, 1, 0);  // s_0: "an arbitrary nonzero vector" (a poor one, to show a few s_i)
+  for (int row = 0; row < 2; ++row) {
+    const Pair& pair = *rows[row].first;
+    ExtrusionTrace<double> trace;
+    const auto test = extrusionTest(pair.P, pair.Q, t0, t1, settings, nullptr, trace);
+    panel(c, 0, row, W, H, 30, "(" + std::string(1, "ac"[row]) + ") " + rows[row].second + ": P and Q at t_0 and t_1");
+    drawPair(c, pair, 1);
+    const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1);
+    drawFound(c, pair, test, toi);
+    const bool truth = collides(pair), extruded = reportsCollision(toi.status);
+    verdict(c, solverVerdict(test, toi) + judged(extruded, truth), extruded == truth, 30);
+    panel(c, 1, row, W, H, 30, "(" + std::string(1, "bd"[row]) + ") separating directions s at t_0 and t_1");
+    summary += std::string(row ? "; " : " ") + rows[row].second + ": " + drawSpace(c, pair, trace) + ", " +
+               std::to_string(trace.steps.size()) + " s_i, " + statuses(test, toi);
+  }
+  c.savePng(out + "/separating-space.png");
+  chapter::wrote(out + "/separating-space.png");
+  std::printf("%s\n", summary.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = chapter::outputFolder(argc, argv);
+
+  // Fig. 1 (A): a small fast square passes straight through a thin fixed plate.
+  const Pair passThrough{body(box(0.5, 0.5), glide(V(-3, 0.2, 0), V(6, -0.4, 0))),
+                         body(box(0.2, 3.2), Motion<double>::fixed(Pose<double>::identity())),
+                         V(0, 1, 0), V(0, 1, 0), -4, 4, -2.6, 2.4};
+  // Fig. 1 (B): paths that cross, the crossing passed at different times.
+  const Pair crossing{body(box(0.6, 0.6), glide(V(-3.5, 0, 0), V(6, 0, 0))),
+                      body(box(0.6, 0.6), glide(V(0.8, -1.2, 0), V(3, 3, 0))), V(0, -1, 0), V(-1, 1, 0), -4.2, 4.6, -2.4, 2.4};
+  figure1(out, passThrough, crossing);
+
+  // Fig. 4: (a) a stack of two blocks in free fall, (b) head on, (c) near miss, (d) overtaking.
+  const auto fall = [](double y) {
+    return Motion<double>::constantAcceleration(Pose<double>::translate(V(-2, y, 0)), V(4, 0, 0), V(0, -6, 0));
+  };
+  const std::vector<V> triangle{V(-0.6, -0.5, 0), V(0.7, 0, 0), V(-0.6, 0.5, 0)};
+  const std::vector<V> wedge{V(-0.7, 0, 0), V(0.5, -0.6, 0), V(0.6, 0.5, 0)};
+  const std::vector<std::pair<Pair, std::string>> panels{
+      {Pair{body(box(1.6, 0.7), fall(0.5)), body(box(1.6, 0.7), fall(1.35)), V(-1, -1, 0), V(1, 1, 0), -3.5, 3.5, -3.2, 2.2},
+       "(a) falling together, never touching"},
+      {Pair{body(triangle, glide(V(-3, -0.3, 0), V(5, 0.3, 0))), body(wedge, glide(V(3, 0.3, 0), V(-4, -0.2, 0))),
+            V(0, -1, 0), V(0, 1, 0), -4.2, 4.2, -1.6, 1.6},
+       "(b) head-on collision"},
+      {Pair{body(triangle, glide(V(-3, -0.55, 0), V(6, 0, 0))), body(wedge, glide(V(3, 0.62, 0), V(-6, 0, 0))), V(0, -1, 0),
+            V(0, 1, 0), -4.2, 4.2, -1.8, 1.8},
+       "(c) glancing near miss"},
+      {Pair{body(triangle, glide(V(-3.6, 0, 0), V(7, 0.2, 0))), body(box(0.9, 0.9), glide(V(-1.2, 0.1, 0), V(3, 0, 0))),
+            V(0, -1, 0), V(0, 1, 0), -4.5, 4.5, -1.6, 1.6},
+       "(d) overtaking"}};
+  figure4(out, panels);
+
+  // The separating space: a pair that misses (arcs overlap) and one that collides (arcs disjoint).
+  const std::vector<V> kite{V(-0.8, -0.3, 0), V(0.4, -0.6, 0), V(0.8, 0.4, 0), V(-0.2, 0.7, 0)};
+  const Pair apart{body(kite, glide(V(-2.5, -0.5, 0), V(2, 0.5, 0))), body(triangle, glide(V(1.5, -1, 0), V(0, 3, 0))),
+                   V(0, -1, 0), V(1, 0, 0), -3.6, 3.6, -2.4, 2.8};
+  const Pair hitting{body(kite, glide(V(-2.5, -0.5, 0), V(5, 1, 0))), body(triangle, glide(V(1.5, -1, 0), V(-1, 1.5, 0))),
+                     V(0, -1, 0), V(1, 0, 0), -3.6, 3.6, -2.4, 2.8};
+  separatingSpace(out, apart, hitting);
+  return 0;
+}
