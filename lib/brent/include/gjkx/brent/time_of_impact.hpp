@@ -120,7 +120,8 @@ struct ToiStep {
   bool completeTest = false;
 };
 
-/// One complete extrusion test of the solver (the first, and one per restart).
+/// One complete extrusion test of the solver: the first, one per restart, and the check at
+/// the far end of a converged bracket.
 template <typename S>
 struct ToiInterval {
   /// Its start \f$t_a\f$ (the end is always \f$t_1\f$).
@@ -272,12 +273,30 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
     return best - marginOver(t1 - ta);
   };
 
+  S previousHigh = t1;  // the far end of the last Brent bracket, where F was negative
   for (;;) {
+    // No stored vector separates at ta by the tolerance (GJK's own gap can leave the
+    // distance just above tol with every SD just below it): nothing beyond ta can be
+    // proven, and ta, where the distance is within round-off of tol, is the time of impact.
+    if (vectors.count == 0) {
+      result.status = ToiStatus::Hit;
+      detail::takeContact(result, ta, lastTest);
+      return result;
+    }
     // F(ta) = exact distance - tol > 0; F(t1) = approximate max SD at t1 - margin - tol <= 0.
-    // (Without any stored vector the approximation is -infinity; -tol stands in for it.)
-    const S fHigh = std::min(approximateMaxSdAtEnd() - tol, S(0));
+    // After a restart, if the new vectors are still below the tolerance at the last
+    // bracket's far end, bracket [ta, that end] instead of [ta, t1]: Brent's history is
+    // lost on a restart, and a first secant towards t1 would creep like regula falsi.
     const S fLow = distanceAtTa - tol;
-    BrentStepper<S> brent(ta, fLow, t1, std::isfinite(fHigh) ? fHigh : -tol, timeTolerance);
+    S high = t1, fHigh = std::min(approximateMaxSdAtEnd() - tol, S(0));
+    if (previousHigh < t1 && previousHigh > ta) {
+      const S fPrevious = approximateMaxSd(previousHigh) - tol;
+      if (fPrevious < S(0)) {
+        high = previousHigh;
+        fHigh = fPrevious;
+      }
+    }
+    BrentStepper<S> brent(ta, fLow, high, fHigh, timeTolerance);
     bool restarted = false;
     while (!restarted) {
       if (brent.converged()) {
@@ -336,6 +355,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
           detail::takeContact(result, ta, lastTest);
           return result;
         case ExtrusionStatus::Undecided:
+          previousHigh = std::max(brent.root(), brent.counterpart());
           ta = tx;
           vectors = next.separating;
           distanceAtTa = next.distanceAtStart;
