@@ -164,6 +164,8 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
   S md = std::numeric_limits<S>::infinity();  // Minkowski distance |z| of the current simplex
   Vector3<S> z = Vector3<S>::Zero();
 
+  // Fills the result's last fields and the cache. Every exit then returns `result`
+  // itself, so the (large) result is built in place rather than copied out (speed).
   auto finish = [&](GjkStatus status) {
     result.status = status;
     result.z = z;
@@ -171,22 +173,25 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
     result.witnessP = simplex.witnessP();
     result.witnessQ = simplex.witnessQ();
     if (cache && status != GjkStatus::NumericalFailure) {
-      cache->simplex = simplex;
+      cache->simplex.assignUsed(simplex);
       cache->direction = s;
       cache->hintP = hintP;
       cache->hintQ = hintQ;
       cache->valid = true;
     }
-    return result;
   };
 
-  // The origin is in the simplex, or within round-off of it (relative to its own size).
-  auto overlaps = [&](const Simplex<S>& x) {
+  // The origin is in the simplex, or within round-off of it (relative to its own size):
+  // \f$\lVert z\rVert \le \tau\max_k\lVert w_k\rVert\f$, z the simplex's closest point. Compared
+  // squared, \f$\lVert z\rVert^2 \le \tau^2\max_k\lVert w_k\rVert^2\f$, to save the square roots (speed).
+  auto overlapsAt = [&](const Simplex<S>& x, const Vector3<S>& zx) {
     if (x.size == 4) return true;
-    S wMax = S(0);
-    for (int k = 0; k < x.size; ++k) wMax = std::max(wMax, x.vertices[k].w.norm());
-    return x.closestPoint().norm() <= settings.overlapTolerance * wMax;
+    S wMax2 = S(0);
+    for (int k = 0; k < x.size; ++k) wMax2 = std::max(wMax2, x.vertices[k].w.squaredNorm());
+    const S tau = settings.overlapTolerance;
+    return zx.squaredNorm() <= tau * tau * wMax2;
   };
+  auto overlaps = [&](const Simplex<S>& x) { return overlapsAt(x, x.closestPoint()); };
   auto contains = [](const Simplex<S>& x, const Vector3<S>& w) {
     for (int k = 0; k < x.size; ++k)
       if (x.vertices[k].w == w) return true;
@@ -196,7 +201,10 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
   for (int i = 0; i < settings.maxIterations; ++i) {
     result.iterations = i + 1;
     const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
-    if (!v.w.allFinite()) return finish(GjkStatus::NumericalFailure);
+    if (!v.w.allFinite()) {
+      finish(GjkStatus::NumericalFailure);
+      return result;
+    }
 
     // SD(P, Q, s_i) = s_i . S_Q(-s_i) - s_i . S_P(s_i), for a unit s_i (§2.3).
     const S sNorm = s.norm();
@@ -219,7 +227,10 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
         const SimplexVertex<S>& old = cache->simplex.vertices[k];
         SupportHint hp = old.hintP, hq = old.hintQ;
         const SimplexVertex<S> again = detail::supportPair(P, Q, old.s, hp, hq);
-        if (!again.w.allFinite()) return finish(GjkStatus::NumericalFailure);
+        if (!again.w.allFinite()) {
+          finish(GjkStatus::NumericalFailure);
+          return result;
+        }
         simplex.push(again);
       }
       reduceToClosestFeature(simplex);  // the last simplex may already hold the origin
@@ -238,17 +249,18 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
       // already in the simplex): z is the closest point within the tolerance.
       step = GjkStep::Converged;
     } else {
-      const Simplex<S> before = simplex;
+      Simplex<S> before;
+      before.assignUsed(simplex);
       simplex.push(v);
       reduceToClosestFeature(simplex);
       const Vector3<S> zNew = simplex.closestPoint();
       const S mdNew = zNew.norm();
-      if (overlaps(simplex)) {
+      if (overlapsAt(simplex, zNew)) {
         z = zNew;
         md = S(0);
         step = GjkStep::Overlap;
       } else if (!(mdNew < md)) {
-        simplex = before;  // "until this distance no longer decreases": keep the better simplex
+        simplex.assignUsed(before);  // "until this distance no longer decreases": keep the better simplex
         step = GjkStep::Converged;
       } else {
         z = zNew;
@@ -267,17 +279,21 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
       record.z = z;
       record.minkowskiDistance = md;
       record.step = step;
-      if (!visit(record) && step == GjkStep::Continue) return finish(GjkStatus::StoppedByVisitor);
+      if (!visit(record) && step == GjkStep::Continue) {
+        finish(GjkStatus::StoppedByVisitor);
+        return result;
+      }
     }
     switch (step) {
-      case GjkStep::SeparatingVector: return finish(GjkStatus::SeparatingVector);
-      case GjkStep::Converged: return finish(GjkStatus::Separated);
-      case GjkStep::Overlap: return finish(GjkStatus::Overlapping);
+      case GjkStep::SeparatingVector: finish(GjkStatus::SeparatingVector); return result;
+      case GjkStep::Converged: finish(GjkStatus::Separated); return result;
+      case GjkStep::Overlap: finish(GjkStatus::Overlapping); return result;
       case GjkStep::Continue: break;
     }
     s = z;  // s_{i+1} = z
   }
-  return finish(GjkStatus::IterationCap);
+  finish(GjkStatus::IterationCap);
+  return result;
 }
 
 }  // namespace gjkx

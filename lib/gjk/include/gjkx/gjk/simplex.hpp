@@ -76,6 +76,16 @@ struct Simplex {
   }
   /// Appends a vertex (the caller makes sure there is room).
   void push(const SimplexVertex<S>& v) { vertices[size++] = v; }
+  /// Becomes a copy of `other` in everything that is used: its first `other.size`
+  /// vertices and coordinates. (Speed: GJK saves and restores its simplex every
+  /// iteration; a plain copy would also move the unused slots, four vertices in all.)
+  void assignUsed(const Simplex& other) {
+    for (int k = 0; k < other.size; ++k) {
+      vertices[k] = other.vertices[k];
+      lambda[k] = other.lambda[k];
+    }
+    size = other.size;
+  }
 };
 
 namespace detail {
