@@ -351,3 +351,20 @@ TEST_CASE("the extrusion test in float: the box passing above", "[extrusion][flo
   const auto R = translating(unitBox<float>(), Vector3<float>(3, 0, 0), Vector3<float>(-4, 0, 0));
   CHECK(extrusionTest(P, R, 0.0f, 1.0f).status == ExtrusionStatus::Undecided);
 }
+
+TEST_CASE("the extrusion test takes a rigid body and a deforming simplex together (fuzz finding)",
+          "[extrusion][deforming]") {
+  // Found by tests/fuzz/fuzz_extrusion: extrusionTest(P, Q, ...) with P a Moving<Box> and Q
+  // a DeformingSimplex did not compile (their at(t) return different types, and one `auto`
+  // declaration held both). A unit box fixed at the origin; a point falling from (0, 3, 0)
+  // to (0, 2, 0): SD along +y is 2.5 - 0.5 = 2 at t0 and 1.5 at t1, no collision; falling
+  // to (0, 0, 0) instead, it ends inside the box: undecided.
+  using V = Vector3<double>;
+  const auto box = fixedAt(unitBox<double>(), V::Zero());
+  const DeformingSimplex<double> slow({V(0, 3, 0)}, {V(0, 2, 0)});
+  const ExtrusionResult<double> apart = extrusionTest(box, slow, 0.0, 1.0);
+  CHECK(apart.status == ExtrusionStatus::NoCollision);
+  CHECK(extrusionTest(slow, box, 0.0, 1.0).status == ExtrusionStatus::NoCollision);
+  const DeformingSimplex<double> fast({V(0, 3, 0)}, {V(0, 0, 0)});
+  CHECK(extrusionTest(box, fast, 0.0, 1.0).status == ExtrusionStatus::Undecided);
+}

@@ -183,8 +183,12 @@ ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const 
   result.margin = extrusionMargin(settings.variant, t1 - t0, S(P.accelerationBound()), S(Q.accelerationBound()));
   const S tol = settings.collisionTolerance;
   const S threshold = tol + result.margin;  // what both ends must exceed
-  const auto P0 = P.at(t0), Q0 = Q.at(t0);
-  const auto P1 = P.at(t1), Q1 = Q.at(t1);
+  // One declaration per body: P and Q may be different kinds of body (a rigid
+  // Moving<Shape> against a DeformingSimplex) whose at(t) return different types.
+  const auto P0 = P.at(t0);
+  const auto Q0 = Q.at(t0);
+  const auto P1 = P.at(t1);
+  const auto Q1 = Q.at(t1);
 
   // Temporal coherence: the vector that separated the last interval is tried first.
   if (cache && cache->valid) {
