@@ -1,0 +1,523 @@
+// The time-of-impact comparison of the study (chapter 07): every method on every workload
+// of workloads.hpp, against the independent long-double reference there.
+//
+// Methods (each at the settings listed; "ours" are this library's):
+// - static N: gjkx::intersect at N evenly spaced times (N = 2, 8, 32); the time of impact is
+//   the first sample found intersecting;
+// - swept: gjkx::sweepingTest (the hulls of each body at t0 and t1): yes/no only, so its
+//   error is not measured, only its misses and false alarms;
+// - CA: conservative advancement (the paper's reference [8]), written here: GJK's distance
+//   d at t (its proven lower bound), then t += d / L with L the bound on the relative speed
+//   of any two points (|v| + |a| + |w| r per body), until d < tol (hit) or t > 1 (no hit);
+//   a cap of 10000 steps reports a hit at the last t;
+// - ours: gjkx::timeOfImpact (the paper's extrusion test + Brent) at collision tolerances
+//   1e-2 ... 1e-9 in double and 1e-2 ... 1e-5 in float, time tolerance min(sqrt(eps), tol);
+// - certified: the same with ExtrusionVariant::Certified (double 1e-7 and 1e-5; float 1e-5);
+// - the peers of peers_toi.hpp: FCL naive (toc_err 1e-2, and 1e-3 in the full run), FCL
+//   conservative advancement with FCL's default GJK (libccd, "FCL CA") and its own ("FCL CA
+//   indep"), Bullet btContinuousConvexCollision; Box2D on the 2D set only
+//   (FCL and Bullet on the 3D workloads only).
+// Judging (per query): a miss is a reference hit the method does not report; a false
+// alarm a reported hit on a clear miss of the reference (never within 0.02); the error is
+// |t_method - t_ref| over the hits both report. Undecided answers of ours (iteration cap,
+// numerical failure) count as hits, as a caller that must not miss would take them.
+// Timing: each (method, query) is run once for its answer, then repeated for about
+// `budget` seconds and timed as one batch (steady_clock): one time per query; the table
+// gives the median and 99th percentile over the workload's queries.
+//
+// Also here: the CCD benchmark's sample queries (chapter 05's reader) at collision
+// tolerances 1e-4 ... 1e-10 in double: false negatives, false positives, time per query.
+#pragma once
+
+#include "../05_brent/ccd_query_reader.hpp"
+#include "peers_toi.hpp"
+#include "workloads.hpp"
+
+#include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+#ifndef GJKX_CCD_QUERIES_DIR
+#define GJKX_CCD_QUERIES_DIR ""
+#endif
+
+namespace gjkx::toistudy {
+
+/// Options of the comparison.
+struct ToiStudyOptions {
+  /// A short run (for study_summary): fewer queries, shorter timing batches, fewer settings.
+  bool quick = false;
+  /// Seed of the workloads.
+  std::uint64_t seed = 4;
+  /// The CCD benchmark's sample queries (empty: the build's default, ../shared/data/ccd-queries).
+  std::string ccdData;
+  /// Progress lines on stderr.
+  bool verbose = false;
+};
+
+/// One method at one setting on one workload.
+struct ToiRow {
+  std::string workload;
+  std::string family;   ///< static N, swept, CA, ours, certified, FCL naive, FCL CA, Bullet, Box2D
+  std::string setting;  ///< e.g. "tol=1e-7", "N=8", "toc_err=1e-2", "-"
+  std::string scalar;   ///< double or float
+  bool ours = false;
+  bool detectionOnly = false;
+  int queries = 0, refHits = 0, clearMisses = 0;
+  int misses = 0, falseAlarms = 0, reported = 0;
+  std::vector<double> errors;  ///< |t - t_ref| over the hits both report
+  double errMedian = std::numeric_limits<double>::quiet_NaN(), errMax = std::numeric_limits<double>::quiet_NaN();
+  double medianUs = 0, p99Us = 0;
+  double meanGjkRuns = 0;  ///< GJK runs per query (methods of ours)
+  /// "family setting scalar" without the dashes, e.g. "ours tol=1e-7 double".
+  std::string label() const {
+    std::string s = family;
+    if (setting != "-") s += " " + setting;
+    return s + " " + scalar;
+  }
+};
+
+/// The CCD sample queries at one tolerance.
+struct CcdRow {
+  double tolerance = 0;
+  long long queries = 0, truthPositives = 0, positives = 0, fn = 0, fp = 0, capped = 0;
+  double usPerQuery = 0;
+};
+
+/// Everything the comparison measured.
+struct ToiStudyResults {
+  std::vector<ToiWorkload> workloads;
+  std::vector<ToiRow> rows;
+  std::vector<CcdRow> ccd;
+  std::string ccdNote;  ///< why the CCD part is missing, if it is
+};
+
+namespace detail {
+
+template <typename S>
+using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
+
+template <typename S>
+AnyShape<S> ourShape(const ShapeSpec& s) {
+  auto points = [&] {
+    std::vector<Vector3<S>> out;
+    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
+    return out;
+  };
+  switch (s.kind) {
+    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
+    case ShapeKind::Sphere:
+    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
+    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
+    case ShapeKind::Polytope: return Polytope<S>::hull(points());
+    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
+  }
+  return Box<S>(Vector3<S>::Ones());
+}
+
+/// A query in one scalar type: shapes, motions, and the relative speed bound L.
+template <typename S>
+struct Prepared {
+  AnyShape<S> P, Q;
+  Motion<S> mp, mq;
+  S lipschitz;
+  explicit Prepared(const ToiQuery& q)
+      : P(ourShape<S>(q.P)), Q(ourShape<S>(q.Q)), mp(toMotion<S>(q.motionP)), mq(toMotion<S>(q.motionQ)) {
+    auto bound = [](const MotionSpec& m, const ShapeSpec& s) { return m.v.norm() + m.a.norm() + m.w.norm() * s.boundingRadius(); };
+    lipschitz = S((bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * 1.000001);
+  }
+};
+
+/// What a method said.
+struct Outcome {
+  bool hit = false;
+  double time = 1;
+  int gjkRuns = 0;  ///< GJK runs (ours, CA, static, swept; 0 for the peers)
+};
+
+/// Runs `call` once for its answer, then in three batches of about `budget` / 3 seconds
+/// each (at least one call each); returns the median batch's seconds per call (a batch
+/// preempted by another process does not count).
+template <typename F>
+double timeCalls(double budget, Outcome& out, F&& call) {
+  using Clock = std::chrono::steady_clock;
+  auto start = Clock::now();
+  out = call();
+  const double first = std::chrono::duration<double>(Clock::now() - start).count();
+  // A slow first call (cold caches, or preempted) does not decide the time: three batches do.
+  const int reps = first >= budget / 3 ? 1 : int(std::min(100000.0, budget / 3 / std::max(first, 1e-9)));
+  double sink = 0;
+  double batch[3];
+  for (double& b : batch) {
+    start = Clock::now();
+    for (int k = 0; k < reps; ++k) sink += call().time;
+    b = std::chrono::duration<double>(Clock::now() - start).count() / reps;
+  }
+  if (sink == -1) std::fprintf(stderr, " ");  // keeps the calls
+  std::sort(batch, batch + 3);
+  return batch[1];
+}
+
+/// Runs a method of ours (a generic callable on two Moving bodies and L) with concrete shape types.
+template <typename S, typename F>
+double timeOurs(const Prepared<S>& p, double budget, Outcome& out, F&& method) {
+  return std::visit(
+      [&](const auto& a, const auto& b) {
+        const auto P = moving(a, p.mp);
+        const auto Q = moving(b, p.mq);
+        return timeCalls(budget, out, [&] { return method(P, Q, p.lipschitz); });
+      },
+      p.P, p.Q);
+}
+
+// The methods of ours, as generic callables (P, Q, L) -> Outcome.
+struct StaticSampling {
+  int samples;
+  template <typename MP, typename MQ, typename S>
+  Outcome operator()(const MP& P, const MQ& Q, S /*L*/) const {
+    for (int k = 0; k < samples; ++k) {
+      const S t = S(k) / S(samples - 1);
+      if (intersect(P.at(t), Q.at(t)).status != IntersectionStatus::Disjoint) return {true, double(t), k + 1};
+    }
+    return {false, 1.0, samples};
+  }
+};
+struct Swept {
+  template <typename MP, typename MQ, typename S>
+  Outcome operator()(const MP& P, const MQ& Q, S /*L*/) const {
+    return {sweepingTest(P, Q, S(0), S(1)).status != IntersectionStatus::Disjoint, 0.0, 1};
+  }
+};
+struct ConservativeAdvancement {
+  double tolerance;
+  template <typename MP, typename MQ, typename S>
+  Outcome operator()(const MP& P, const MQ& Q, S L) const {
+    const S tol = S(tolerance);
+    S t = 0;
+    for (int step = 0; step < 10000; ++step) {
+      const GjkResult<S> r = gjk(P.at(t), Q.at(t));
+      if (r.status == GjkStatus::Overlapping || r.status == GjkStatus::NumericalFailure || r.distance < tol)
+        return {true, double(t), step + 1};
+      const S d = std::max(r.lowerBound, S(0));  // proven: the bodies are at least d apart
+      t += d / L;
+      if (t > S(1)) return {false, 1.0, step + 1};
+    }
+    return {true, double(t), 10000};  // cap: undecided, taken as a hit
+  }
+};
+struct Ours {
+  double tolerance;
+  ExtrusionVariant variant;
+  template <typename MP, typename MQ, typename S>
+  Outcome operator()(const MP& P, const MQ& Q, S /*L*/) const {
+    ToiSettings<S> settings;
+    settings.collisionTolerance = S(tolerance);
+    settings.timeTolerance = std::min(settings.timeTolerance, S(tolerance));
+    settings.variant = variant;
+    const ToiResult<S> r = timeOfImpact(P, Q, S(0), S(1), settings);
+    return {reportsCollision(r.status), double(r.time), r.gjkRuns};
+  }
+};
+
+/// One query, prepared for every method.
+struct QueryContext {
+  const ToiQuery& query;
+  Prepared<double> d;
+  Prepared<float> f;
+#if GJKX_HAVE_FCL
+  std::unique_ptr<peers::FclQuery> fcl;
+#endif
+#if GJKX_HAVE_BULLET
+  std::unique_ptr<peers::BulletQuery> bullet;
+#endif
+#if GJKX_HAVE_BOX2D
+  std::unique_ptr<peers::Box2dQuery> box2d;
+#endif
+  explicit QueryContext(const ToiQuery& q) : query(q), d(q), f(q) {
+#if GJKX_HAVE_FCL
+    if (!q.planar) fcl = std::make_unique<peers::FclQuery>(q);
+#endif
+#if GJKX_HAVE_BULLET
+    if (!q.planar) bullet = std::make_unique<peers::BulletQuery>(q);
+#endif
+#if GJKX_HAVE_BOX2D
+    if (q.planar) box2d = std::make_unique<peers::Box2dQuery>(q);
+#endif
+  }
+};
+
+/// A method at one setting: runs on one query (answer in `out`), returns seconds per call.
+struct Method {
+  std::string family, setting, scalar;
+  bool ours = true, detectionOnly = false;
+  bool planar = true, spatial = true;  ///< runs on the 2D set / on the 3D workloads
+  std::function<double(const QueryContext&, double, Outcome&)> run;
+};
+
+inline std::string tolText(double tol) {
+  char s[32];
+  std::snprintf(s, sizeof s, "tol=1e%d", int(std::lround(std::log10(tol))));
+  return s;
+}
+
+template <typename F>
+void addOurs(std::vector<Method>& methods, const std::string& family, const std::string& setting, bool useFloat, F callable,
+             bool detectionOnly = false) {
+  Method m;
+  m.family = family;
+  m.setting = setting;
+  m.scalar = useFloat ? "float" : "double";
+  m.detectionOnly = detectionOnly;
+  if (useFloat)
+    m.run = [callable](const QueryContext& c, double budget, Outcome& out) { return timeOurs(c.f, budget, out, callable); };
+  else
+    m.run = [callable](const QueryContext& c, double budget, Outcome& out) { return timeOurs(c.d, budget, out, callable); };
+  methods.push_back(std::move(m));
+}
+
+inline std::vector<Method> methods(bool quick) {
+  std::vector<Method> out;
+  for (int n : {2, 8, 32}) addOurs(out, "static", "N=" + std::to_string(n), false, StaticSampling{n});
+  addOurs(out, "static", "N=8", true, StaticSampling{8});
+  addOurs(out, "swept", "-", false, Swept{}, true);
+  addOurs(out, "swept", "-", true, Swept{}, true);
+  for (double tol : {1e-3, 1e-5, 1e-7}) addOurs(out, "CA", tolText(tol), false, ConservativeAdvancement{tol});
+  for (double tol : {1e-3, 1e-5}) addOurs(out, "CA", tolText(tol), true, ConservativeAdvancement{tol});
+  for (double tol : {1e-2, 1e-3, 1e-5, 1e-7, 1e-9}) addOurs(out, "ours", tolText(tol), false, Ours{tol, ExtrusionVariant::Paper});
+  for (double tol : {1e-2, 1e-3, 1e-5}) addOurs(out, "ours", tolText(tol), true, Ours{tol, ExtrusionVariant::Paper});
+  addOurs(out, "certified", tolText(1e-7), false, Ours{1e-7, ExtrusionVariant::Certified});
+  addOurs(out, "certified", tolText(1e-5), false, Ours{1e-5, ExtrusionVariant::Certified});
+  addOurs(out, "certified", tolText(1e-5), true, Ours{1e-5, ExtrusionVariant::Certified});
+#if GJKX_HAVE_FCL
+  for (double tocErr : quick ? std::vector<double>{1e-2} : std::vector<double>{1e-2, 1e-3}) {
+    Method m{"FCL naive", tocErr > 5e-3 ? "toc_err=1e-2" : "toc_err=1e-3", "double", false, false, false, true, {}};
+    m.run = [tocErr](const QueryContext& c, double budget, Outcome& out) {
+      return timeCalls(budget, out, [&] {
+        const auto r = c.fcl->run(false, tocErr);
+        return Outcome{r.hit, r.time};
+      });
+    };
+    out.push_back(std::move(m));
+  }
+  for (const bool indep : {false, true}) {
+    Method m{indep ? "FCL CA indep" : "FCL CA", "-", "double", false, false, false, true, {}};
+    m.run = [indep](const QueryContext& c, double budget, Outcome& out) {
+      return timeCalls(budget, out, [&] {
+        const auto r = c.fcl->run(true, 1e-4, indep ? fcl::GST_INDEP : fcl::GST_LIBCCD);
+        return Outcome{r.hit, r.time};
+      });
+    };
+    out.push_back(std::move(m));
+  }
+#endif
+#if GJKX_HAVE_BULLET
+  {
+    Method m{"Bullet", "-", "float", false, false, false, true, {}};
+    m.run = [](const QueryContext& c, double budget, Outcome& out) {
+      return timeCalls(budget, out, [&] {
+        const auto r = c.bullet->run();
+        return Outcome{r.hit, r.time};
+      });
+    };
+    out.push_back(std::move(m));
+  }
+#endif
+#if GJKX_HAVE_BOX2D
+  {
+    Method m{"Box2D", "-", "float", false, false, true, false, {}};
+    m.run = [](const QueryContext& c, double budget, Outcome& out) {
+      return timeCalls(budget, out, [&] {
+        const auto r = c.box2d->run();
+        return Outcome{r.hit, r.time};
+      });
+    };
+    out.push_back(std::move(m));
+  }
+#endif
+  (void)quick;
+  return out;
+}
+
+inline double quantile(std::vector<double> x, double q) {
+  if (x.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(x.begin(), x.end());
+  const std::size_t k = std::min(x.size() - 1, std::size_t(std::ceil(q * double(x.size()))) - (q > 0 ? 1 : 0));
+  return x[k];
+}
+inline double median(std::vector<double> x) {
+  if (x.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(x.begin(), x.end());
+  const std::size_t n = x.size();
+  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+
+}  // namespace detail
+
+/// The CCD sample queries at collision tolerances 1e-4 ... 1e-10 (double).
+inline std::vector<CcdRow> runCcdSweep(const std::string& folder, std::string& note) {
+  std::vector<CcdRow> rows;
+  std::string dir = folder.empty() ? std::string(GJKX_CCD_QUERIES_DIR) : folder;
+  if (dir.empty() || !std::filesystem::is_directory(dir)) {
+    note = "CCD sample queries not found (looked for '" + dir + "'); pass --ccd-data DIR";
+    return rows;
+  }
+  const std::vector<ccd::QueryFile> files = ccd::readQueryFolder(dir);
+  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    ToiSettings<double> settings;
+    settings.collisionTolerance = tol;
+    CcdRow row;
+    row.tolerance = tol;
+    double seconds = 0;
+    for (const auto& file : files) {
+      const ccd::FileRun<double> run = ccd::runQueries(file, settings);
+      row.queries += (long long)file.queries.size();
+      for (const auto& q : file.queries) row.truthPositives += q.truth;
+      row.positives += run.positives;
+      row.fn += run.falseNegatives;
+      row.fp += run.falsePositives;
+      row.capped += run.capped;
+      seconds += run.seconds;
+    }
+    row.usPerQuery = row.queries ? 1e6 * seconds / double(row.queries) : 0;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// Runs the whole comparison; see the file comment.
+inline ToiStudyResults runToiComparisons(const ToiStudyOptions& options) {
+  ToiStudyResults results;
+  WorkloadOptions wo;
+  wo.queriesPerWorkload = options.quick ? 40 : 120;
+  wo.seed = options.seed;
+  const auto start = std::chrono::steady_clock::now();
+  results.workloads = makeWorkloads(wo);
+  if (options.verbose)
+    std::fprintf(stderr, "toi: workloads and references in %.1f s\n",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const double budget = options.quick ? 2e-4 : 1e-3;
+  const std::vector<detail::Method> methods = detail::methods(options.quick);
+  for (const ToiWorkload& w : results.workloads) {
+    std::vector<std::unique_ptr<detail::QueryContext>> contexts;
+    for (const auto& q : w.queries) contexts.push_back(std::make_unique<detail::QueryContext>(q));
+    for (const detail::Method& m : methods) {
+      if (w.planar ? !m.planar : !m.spatial) continue;
+      ToiRow row;
+      row.workload = w.name;
+      row.family = m.family;
+      row.setting = m.setting;
+      row.scalar = m.scalar;
+      row.ours = m.ours;
+      row.detectionOnly = m.detectionOnly;
+      std::vector<double> times;
+      for (const auto& c : contexts) {
+        detail::Outcome out;
+        const double seconds = m.run(*c, budget, out);
+        times.push_back(1e6 * seconds);
+        const ToiQuery& q = c->query;
+        ++row.queries;
+        row.refHits += q.refHit;
+        row.clearMisses += q.clearMiss;
+        row.reported += out.hit;
+        if (q.refHit && !out.hit) ++row.misses;
+        if (q.clearMiss && out.hit) ++row.falseAlarms;
+        if (q.refHit && out.hit && !m.detectionOnly) row.errors.push_back(std::abs(out.time - q.tRef));
+        row.meanGjkRuns += out.gjkRuns;
+      }
+      row.meanGjkRuns /= std::max(1, row.queries);
+      row.medianUs = detail::median(times);
+      row.p99Us = detail::quantile(times, 0.99);
+      if (!row.errors.empty()) {
+        row.errMedian = detail::median(row.errors);
+        row.errMax = *std::max_element(row.errors.begin(), row.errors.end());
+      }
+      results.rows.push_back(std::move(row));
+    }
+    if (options.verbose)
+      std::fprintf(stderr, "toi: %s done at %.1f s\n", w.name.c_str(),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  results.ccd = runCcdSweep(options.ccdData, results.ccdNote);
+  return results;
+}
+
+/// One table line per row.
+inline std::string formatToiRow(const ToiRow& r) {
+  char line[512];
+  auto err = [](double e) {
+    char s[32];
+    if (std::isnan(e)) return std::string("       -");
+    std::snprintf(s, sizeof s, "%8.1e", e);
+    return std::string(s);
+  };
+  char gjk[16] = "    -";
+  if (r.ours) std::snprintf(gjk, sizeof gjk, "%5.1f", r.meanGjkRuns);
+  std::snprintf(line, sizeof line, "%-11s %-10s %-13s %-6s %9.2f %9.2f %5d/%-3d %4d/%-3d %s %s %s", r.workload.c_str(), r.family.c_str(),
+                r.setting.c_str(), r.scalar.c_str(), r.medianUs, r.p99Us, r.misses, r.refHits, r.falseAlarms, r.clearMisses,
+                err(r.errMedian).c_str(), err(r.errMax).c_str(), gjk);
+  return line;
+}
+inline const char* toiTableHeader() {
+  return "workload    method     setting       scalar  med_us    p99_us  misses    f.alarms err_med  err_max   gjk/q";
+}
+
+/// The RATIO lines of the ToI comparison: ours (double, tol 1e-7) against the fastest peer
+/// and against FCL's conservative advancement (default solver, libccd), per workload.
+inline std::vector<std::string> toiRatioLines(const std::vector<ToiRow>& rows) {
+  std::vector<std::string> order;
+  std::map<std::string, double> ours, best, fclCa;
+  std::map<std::string, std::string> bestName;
+  for (const auto& r : rows) {
+    if (std::find(order.begin(), order.end(), r.workload) == order.end()) order.push_back(r.workload);
+    if (r.family == "ours" && r.setting == "tol=1e-7" && r.scalar == "double") ours[r.workload] = r.medianUs;
+    if (!r.ours && (!best.count(r.workload) || r.medianUs < best[r.workload])) {
+      best[r.workload] = r.medianUs;
+      bestName[r.workload] = r.family + (r.setting == "-" ? "" : " " + r.setting);
+    }
+    if (r.family == "FCL CA") fclCa[r.workload] = r.medianUs;
+  }
+  std::vector<std::string> lines;
+  for (const auto& w : order) {
+    if (!ours.count(w)) continue;
+    char line[256];
+    if (best.count(w)) {
+      std::snprintf(line, sizeof line, "RATIO toi_%s ours_vs_best_peer=%.2f best_peer=%s", w.c_str(), ours[w] / best[w],
+                    bestName[w].c_str());
+      lines.push_back(line);
+    }
+    if (fclCa.count(w)) {
+      std::snprintf(line, sizeof line, "RATIO toi_%s ours_vs_fcl_ca=%.2f", w.c_str(), ours[w] / fclCa[w]);
+      lines.push_back(line);
+    }
+  }
+  return lines;
+}
+
+/// `MISSES method=<label> workload=<name> misses=N false_alarms=N queries=N`, one per row.
+inline std::vector<std::string> toiMissLines(const std::vector<ToiRow>& rows) {
+  std::vector<std::string> lines;
+  for (const auto& r : rows) {
+    std::string name;  // the label, spaces as '_', '=' dropped: "ours_tol1e-7_double"
+    for (char c : r.label())
+      if (c != '=') name += c == ' ' ? '_' : c;
+    char line[256];
+    std::snprintf(line, sizeof line, "MISSES method=%s workload=%s misses=%d false_alarms=%d queries=%d", name.c_str(), r.workload.c_str(),
+                  r.misses, r.falseAlarms, r.queries);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+}  // namespace gjkx::toistudy
