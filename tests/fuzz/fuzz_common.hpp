@@ -701,4 +701,20 @@ Real signedDistanceAt(const Body<S>& P, const Body<S>& Q, S t, Real confirmBelow
   return signedDistance(cloudAt(P, t), cloudAt(Q, t));
 }
 
+/// One fuzz input: the first flag byte picks float or double, then the target's checks
+/// run. A std::invalid_argument is the library refusing decoded input (a flat polytope,
+/// a zero axis, an empty interpolation): a correct answer, not a finding.
+template <typename RunFloat, typename RunDouble>
+int runOneInput(const uint8_t* data, size_t size, RunFloat runFloat, RunDouble runDouble) {
+  Decoder in(data, size);
+  try {
+    if (in.flag())
+      runFloat(in);
+    else
+      runDouble(in);
+  } catch (const std::invalid_argument&) {
+  }
+  return 0;
+}
+
 }  // namespace gjkx::fuzz
