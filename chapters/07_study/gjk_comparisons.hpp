@@ -60,6 +60,9 @@ struct GjkRow {
   int judged = 0;                        ///< boolean: queries outside the band
   int wrong = 0;                         ///< boolean: wrong answers
   int failures = 0;                      ///< no answer (iteration cap, NaN, no result)
+  /// Ours only: how the `failures` split by status, counted in a separate untimed pass with
+  /// the same calls (the peers report no status, only an answer or none).
+  int iterationCap = 0, numericalFailure = 0, otherFailure = 0;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -446,7 +449,29 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
     if (r.status == GjkStatus::Separated || r.status == GjkStatus::Overlapping) return double(r.distance);
     return std::nan("");
   };
-  return measure(workload, method, warm ? "GjkCache" : "-", true, queries, boolean, repeats, answer, reset);
+  GjkRow row = measure(workload, method, warm ? "GjkCache" : "-", true, queries, boolean, repeats, answer, reset);
+  // The failure statuses, for the float-against-double table: the same calls once more,
+  // untimed, in the same order (so the warm caches evolve as in the measured passes).
+  reset();
+  for (int k = 0; k < int(queries.size()); ++k) {
+    if (warm && queries[k].startsTrajectory) cache.valid = false;
+    bool cap = false, numerical = false, other = false;
+    if (boolean) {
+      const IntersectionStatus s = intersect(P[k], Q[k], intersection, cachePtr).status;
+      cap = s == IntersectionStatus::IterationCap;
+      numerical = s == IntersectionStatus::NumericalFailure;
+      other = !cap && !numerical && s != IntersectionStatus::Disjoint && s != IntersectionStatus::Intersecting;
+    } else {
+      const GjkStatus s = gjk(P[k], Q[k], settings, cachePtr).status;
+      cap = s == GjkStatus::IterationCap;
+      numerical = s == GjkStatus::NumericalFailure;
+      other = !cap && !numerical && s != GjkStatus::Separated && s != GjkStatus::Overlapping;
+    }
+    row.iterationCap += cap;
+    row.numericalFailure += numerical;
+    row.otherFailure += other;
+  }
+  return row;
 }
 
 /// Not a method of the library (yet): what the core-plus-radius treatment would give

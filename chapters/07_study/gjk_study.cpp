@@ -1,35 +1,469 @@
 // The GJK comparison of the study (chapter 07): ours against libccd, FCL and Bullet on
 // distance and boolean queries, cold and warm-started, with the disagreement against an
-// exact reference. Prints one table per workload and ends with the RATIO lines
-// (ours-double median time / the best peer's, measured in this run).
+// exact reference. Prints one table per workload, float against double for ours, and ends
+// with the RATIO lines (ours-double median time / the best peer's, measured in this run).
 //
-//   gjk_study [--quick] [--seed N]
+//   gjk_study [--out DIR] [--quick] [--seed N]
+//
+// Writes into DIR (default figures/study):
+// - gjk-table.md, gjk-float-vs-double.md: the tables of stdout as markdown (the docs page
+//   of the study includes them);
+// - per workload group (distance cold, distance warm, boolean cold, boolean warm):
+//   gjk-<group>.csv and .gp, and gjk-<group>.png when gnuplot is installed: one panel per
+//   shape, error (log) against median time per query (log), one point per method. For
+//   distance queries the point is the median error |d - d_ref| and its bar reaches the
+//   maximum; for boolean queries the point is the rate of wrong answers. An error of 0
+//   cannot sit on a log axis: it is drawn at a floor, which the figure states.
+// A full run takes about a minute on an idle 2-core machine (most of it the references of
+// the 1000-vertex polytopes), --quick a few seconds. Regenerate the kept figures with
+// `build/chapters/07_study/gjk_study --out figures/study`.
 //
 // What each column means, and how the shapes, poses and references are made:
 // gjk_comparisons.hpp; how each peer is called (margins, warm starts): peers_gjk.hpp.
 #include "gjk_comparisons.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <string>
+#include <vector>
 
-int main(int argc, char** argv) {
-  gjkx::study::GjkStudyOptions options;
+using gjkx::study::GjkRow;
+
+namespace {
+
+struct Options {
+  std::string out = "figures/study";
+  gjkx::study::GjkStudyOptions study;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
   for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--quick")) {
-      options.quick = true;
-    } else if (!std::strcmp(argv[k], "--seed") && k + 1 < argc) {
-      options.seed = unsigned(std::strtoul(argv[++k], nullptr, 10));
+    const std::string arg = argv[k];
+    if (arg == "--quick") {
+      o.study.quick = true;
+    } else if (arg == "--seed" && k + 1 < argc) {
+      o.study.seed = unsigned(std::strtoul(argv[++k], nullptr, 10));
+    } else if (arg == "--out" && k + 1 < argc) {
+      o.out = argv[++k];
     } else {
-      std::fprintf(stderr, "usage: %s [--quick] [--seed N]\n", argv[0]);
-      return 2;
+      std::fprintf(arg == "--help" || arg == "-h" ? stdout : stderr,
+                   "usage: %s [--out DIR] [--quick] [--seed N]\n"
+                   "  the GJK study: tables on stdout, markdown tables and plots in DIR (default figures/study)\n",
+                   argv[0]);
+      std::exit(arg == "--help" || arg == "-h" ? 0 : 2);
     }
   }
-  std::printf("GJK comparison (%s run, seed %u); %s\n", options.quick ? "quick" : "full", options.seed, gjkx::study::peersPresent().c_str());
+  return o;
+}
+
+// A workload name gjk_<distance|boolean>_<shape>[_warm], taken apart.
+struct WorkloadName {
+  bool boolean = false, warm = false;
+  std::string shape;
+};
+WorkloadName split(const std::string& workload) {
+  WorkloadName n;
+  std::string rest = workload.substr(4);  // after "gjk_"
+  n.boolean = rest.rfind("boolean_", 0) == 0;
+  rest = rest.substr(n.boolean ? 8 : 9);
+  n.warm = rest.size() > 5 && rest.compare(rest.size() - 5, 5, "_warm") == 0;
+  n.shape = n.warm ? rest.substr(0, rest.size() - 5) : rest;
+  return n;
+}
+
+// The four workload groups, in the order of the figures and tables.
+struct Group {
+  bool boolean, warm;
+  const char* file;   // gjk-<file>.png
+  const char* title;  // for titles and headings
+};
+constexpr Group kGroups[] = {{false, false, "distance-cold", "distance queries, cold"},
+                             {false, true, "distance-warm", "distance queries, warm-started"},
+                             {true, false, "boolean-cold", "boolean queries, cold"},
+                             {true, true, "boolean-warm", "boolean queries, warm-started"}};
+
+// Where an error of exactly 0 is drawn on the log axis.
+constexpr double kDistanceFloor = 1e-18;
+constexpr double kBooleanFloor = 1e-4;
+
+// The fastest peer of a workload (median time), 0 when it has none.
+double bestPeerNs(const std::vector<GjkRow>& rows, const std::string& workload) {
+  double best = 0;
+  for (const auto& r : rows)
+    if (r.workload == workload && !r.ours && (best == 0 || r.medianNs < best)) best = r.medianNs;
+  return best;
+}
+
+std::string format(const char* f, double x) {
+  char s[64];
+  std::snprintf(s, sizeof s, f, x);
+  return s;
+}
+
+std::string today() {
+  char s[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(s, sizeof s, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return s;
+}
+
+std::string provenance(const Options& o) {
+  return std::string("Written by `gjk_study --out ") + o.out + (o.study.quick ? " --quick" : "") +
+         (o.study.seed != gjkx::study::GjkStudyOptions{}.seed ? " --seed " + std::to_string(o.study.seed) : std::string()) + "` (" +
+         (o.study.quick ? "quick" : "full") + " run, seed " + std::to_string(o.study.seed) + ") on " + today() + "; " +
+         gjkx::study::peersPresent() + ".";
+}
+
+// Failures of ours, by status: "0", or e.g. "3 (cap 2, numerical 1)".
+std::string failureText(const GjkRow& r) {
+  if (r.failures == 0) return "0";
+  std::string s = std::to_string(r.failures);
+  if (r.ours) {
+    s += " (cap " + std::to_string(r.iterationCap) + ", numerical " + std::to_string(r.numericalFailure);
+    if (r.otherFailure) s += ", other " + std::to_string(r.otherFailure);
+    s += ")";
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------
+// Markdown tables
+
+void writeMainTable(const std::string& path, const Options& o, const std::vector<GjkRow>& rows) {
+  std::ofstream md(path);
+  md << provenance(o) << " Time: median and 99th percentile per query (ns), over batches of 16 queries timed together. "
+     << "*vs best peer*: this row's median time divided by the fastest peer's on the same workload (below 1: faster than every peer). "
+     << "Distance error: |d - d_ref| against the exact long-double reference (an overlap counts as distance 0). "
+     << "Boolean: wrong answers / judged queries (pairs closer than 5e-4 but apart are not judged). "
+     << "*failures*: queries without an answer.\n";
+  for (const Group& g : kGroups) {
+    md << "\n**GJK, " << g.title << "**\n\n";
+    if (g.boolean) {
+      md << "| shape | method | warm start | median ns | p99 ns | wrong / judged | failures | vs best peer |\n";
+      md << "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+    } else {
+      md << "| shape | method | warm start | median ns | p99 ns | error median | error max | failures | vs best peer |\n";
+      md << "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    }
+    for (const auto& r : rows) {
+      const WorkloadName n = split(r.workload);
+      if (n.boolean != g.boolean || n.warm != g.warm) continue;
+      const double best = bestPeerNs(rows, r.workload);
+      md << "| " << n.shape << " (" << r.queries << ") | " << (r.method == "ours-double" ? "**ours-double**" : r.method) << " | "
+         << r.warmStart << " | " << format("%.1f", r.medianNs) << " | " << format("%.1f", r.p99Ns) << " | ";
+      if (g.boolean) md << r.wrong << " / " << r.judged << " | ";
+      else md << format("%.1e", r.errorMedian) << " | " << format("%.1e", r.errorMax) << " | ";
+      md << failureText(r) << " | " << (best > 0 ? format("%.2f", r.medianNs / best) : std::string("-")) << " |\n";
+    }
+  }
+}
+
+// Ours in double against ours in float, workload by workload.
+struct ScalarPair {
+  std::string workload;
+  const GjkRow *d = nullptr, *f = nullptr;
+};
+
+std::vector<ScalarPair> scalarPairs(const std::vector<GjkRow>& rows) {
+  std::vector<ScalarPair> pairs;
+  for (const auto& r : rows) {
+    if (r.method != "ours-double" && r.method != "ours-float") continue;
+    if (pairs.empty() || pairs.back().workload != r.workload) pairs.push_back({r.workload});
+    (r.method == "ours-double" ? pairs.back().d : pairs.back().f) = &r;
+  }
+  return pairs;
+}
+
+std::string statusCounts(const GjkRow& r) {
+  std::string s = std::to_string(r.iterationCap) + " / " + std::to_string(r.numericalFailure);
+  if (r.otherFailure) s += " (+" + std::to_string(r.otherFailure) + " other)";
+  return s;
+}
+
+void writeFloatVsDouble(const std::string& path, const Options& o, const std::vector<GjkRow>& rows) {
+  std::ofstream md(path);
+  md << provenance(o) << " Ours in double (`ours-double`) against the same code in float (`ours-float`), same shapes and poses "
+     << "(rounded to float), same default settings. *cap / num.*: queries that ended in GjkStatus::IterationCap / "
+     << "GjkStatus::NumericalFailure (for boolean queries the matching IntersectionStatus), counted in an untimed pass. "
+     << "*float/double*: ratio of the median times.\n";
+  for (const bool boolean : {false, true}) {
+    md << "\n**GJK " << (boolean ? "boolean" : "distance") << " queries: float against double**\n\n";
+    if (boolean) {
+      md << "| workload | wrong / judged, double | wrong / judged, float | cap / num., double | cap / num., float | ns double | ns float "
+            "| float/double |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    } else {
+      md << "| workload | error median, double | error max, double | error median, float | error max, float | cap / num., double | cap / "
+            "num., float | ns double | ns float | float/double |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    }
+    for (const auto& p : scalarPairs(rows)) {
+      if (!p.d || !p.f || split(p.workload).boolean != boolean) continue;
+      md << "| " << p.workload.substr(4) << " | ";
+      if (boolean) {
+        md << p.d->wrong << " / " << p.d->judged << " | " << p.f->wrong << " / " << p.f->judged << " | ";
+      } else {
+        md << format("%.1e", p.d->errorMedian) << " | " << format("%.1e", p.d->errorMax) << " | " << format("%.1e", p.f->errorMedian) << " | "
+           << format("%.1e", p.f->errorMax) << " | ";
+      }
+      md << statusCounts(*p.d) << " | " << statusCounts(*p.f) << " | " << format("%.1f", p.d->medianNs) << " | "
+         << format("%.1f", p.f->medianNs) << " | " << format("%.2f", p.f->medianNs / p.d->medianNs) << " |\n";
+    }
+  }
+}
+
+void printFloatVsDouble(const std::vector<GjkRow>& rows) {
+  std::printf("\n== Float against double, ours (cap/num: iteration cap / numerical failure statuses) ==\n");
+  std::printf("%-28s | %-44s | %-44s | %s\n", "workload", "double: error med / max (wrong/judged)  cap/num  ns",
+              "float: error med / max (wrong/judged)  cap/num  ns", "float/double time");
+  for (const auto& p : scalarPairs(rows)) {
+    if (!p.d || !p.f) continue;
+    const bool boolean = split(p.workload).boolean;
+    auto cell = [&](const GjkRow& r) {
+      char s[128];
+      if (boolean)
+        std::snprintf(s, sizeof s, "%8d/%-8d  %18s %3d/%-3d %8.1f", r.wrong, r.judged, "", r.iterationCap, r.numericalFailure, r.medianNs);
+      else
+        std::snprintf(s, sizeof s, "%8.1e / %8.1e  %17s %3d/%-3d %8.1f", r.errorMedian, r.errorMax, "", r.iterationCap, r.numericalFailure,
+                      r.medianNs);
+      return std::string(s);
+    };
+    std::printf("%-28s | %-44s | %-44s | %.2f\n", p.workload.substr(4).c_str(), cell(*p.d).c_str(), cell(*p.f).c_str(),
+                p.f->medianNs / p.d->medianNs);
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Figures: one PNG per group, one panel per shape.
+
+struct Style {
+  const char* colour;
+  int point;
+};
+// Ours in blues (filled: double, open: float, diamond: the core-plus-radius variant); each peer its own colour.
+Style styleOf(const std::string& method) {
+  static const std::map<std::string, Style> styles = {
+      {"ours-double", {"#08306b", 7}}, {"ours-float", {"#4292c6", 6}},   {"ours-core", {"#17becf", 13}},
+      {"ccd-gjk", {"#ff7f0e", 5}},     {"ccd-mpr", {"#8c564b", 4}},      {"fcl-libccd", {"#d62728", 9}},
+      {"fcl-indep", {"#e377c2", 11}},  {"bullet-gjk", {"#2ca02c", 15}},  {"bullet-gjk-dist", {"#2ca02c", 15}}};
+  const auto it = styles.find(method);
+  return it == styles.end() ? Style{"#000000", 1} : it->second;
+}
+
+// The geometry of a figure, so that the labels can be placed without overlapping: a
+// 1500 x 1000 image, 3 panels per row above a key strip, each panel's plot area at fixed
+// pixel margins inside it.
+constexpr double kImageW = 1500, kImageH = 1000;
+constexpr int kColumns = 3;
+constexpr double kPanelsTop = 0.95, kPanelsBottom = 0.12;  // screen fractions
+constexpr double kLeftPx = 70, kRightPx = 15, kBottomPx = 50, kTopPx = 28;
+constexpr double kCharW = 6.0, kCharH = 12.0;  // the labels' font (sans 8), roughly
+
+// One method on one shape: a point of a panel, and where its label goes.
+struct PlotPoint {
+  const GjkRow* row;
+  int panel, method;
+  double x, y, yMax;
+  std::string label;
+  double labelX = 0, labelY = 0;
+};
+
+// The axis ranges of a panel (data units) and its plot area in pixels.
+struct PanelAxes {
+  double xLo, xHi, yLo, yHi, widthPx, heightPx;
+  double px(double x) const { return std::log10(x / xLo) / std::log10(xHi / xLo) * widthPx; }
+  double py(double y) const { return std::log10(y / yLo) / std::log10(yHi / yLo) * heightPx; }
+  double fromPx(double p) const { return xLo * std::pow(xHi / xLo, p / widthPx); }
+  double fromPy(double p) const { return yLo * std::pow(yHi / yLo, p / heightPx); }
+};
+
+// Places the labels of one panel greedily, left to right: beside the point if free, else
+// one row up or down, then two, ... (a leader line joins a moved label to its point).
+void placeLabels(std::vector<PlotPoint*>& points, const PanelAxes& axes) {
+  struct Box {
+    double x0, y0, x1, y1;
+    bool hits(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  };
+  std::vector<Box> taken;
+  for (const auto* p : points) taken.push_back({axes.px(p->x) - 7, axes.py(p->y) - 7, axes.px(p->x) + 7, axes.py(p->y) + 7});
+  std::sort(points.begin(), points.end(), [](const PlotPoint* a, const PlotPoint* b) { return a->x < b->x; });
+  for (auto* p : points) {
+    const double x0 = axes.px(p->x) + 9, w = kCharW * double(p->label.size()), y = axes.py(p->y);
+    Box chosen{x0, y - kCharH / 2, x0 + w, y + kCharH / 2};
+    for (int k = 0; k < 40; ++k) {
+      const double dy = (k % 2 ? -1.0 : 1.0) * double((k + 1) / 2) * (kCharH + 2);
+      const Box b{x0, y + dy - kCharH / 2, x0 + w, y + dy + kCharH / 2};
+      if (b.y0 < 0 || b.y1 > axes.heightPx) continue;
+      if (std::none_of(taken.begin(), taken.end(), [&](const Box& t) { return t.hits(b); })) {
+        chosen = b;
+        break;
+      }
+    }
+    taken.push_back(chosen);
+    p->labelX = axes.fromPx(chosen.x0);
+    p->labelY = axes.fromPy((chosen.y0 + chosen.y1) / 2);
+  }
+}
+
+// Tics at 1, 2, 5 times the powers of ten inside [lo, hi] (only the powers when that is
+// too many), so that a panel spanning less than a decade still has numbers on its x axis.
+std::string xTics(double lo, double hi) {
+  for (const bool coarse : {false, true}) {
+    std::vector<double> tics;
+    for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
+      for (const double m : {1.0, 2.0, 5.0})
+        if ((!coarse || m == 1.0) && m * decade >= lo && m * decade <= hi) tics.push_back(m * decade);
+    if (tics.size() <= 9 || coarse) {
+      std::string text;
+      for (const double t : tics) text += (text.empty() ? "" : ", ") + format("'%g'", t) + " " + format("%g", t);
+      return text;
+    }
+  }
+  return "";
+}
+
+void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkRow>& rows, bool haveGnuplot) {
+  std::vector<std::string> shapes, methods;
+  std::map<std::string, int> queries;
+  for (const auto& r : rows) {
+    const WorkloadName n = split(r.workload);
+    if (n.boolean != g.boolean || n.warm != g.warm) continue;
+    if (std::find(shapes.begin(), shapes.end(), n.shape) == shapes.end()) shapes.push_back(n.shape);
+    if (std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+    queries[n.shape] = r.queries;
+  }
+  if (shapes.empty()) return;
+  const std::string name = std::string("gjk-") + g.file;
+  const std::string base = folder + "/" + name;
+  const double floor = g.boolean ? kBooleanFloor : kDistanceFloor;
+
+  std::vector<PlotPoint> points;
+  for (const auto& r : rows) {
+    const WorkloadName n = split(r.workload);
+    if (n.boolean != g.boolean || n.warm != g.warm) continue;
+    PlotPoint p{&r, int(std::find(shapes.begin(), shapes.end(), n.shape) - shapes.begin()),
+                int(std::find(methods.begin(), methods.end(), r.method) - methods.begin()), r.medianNs, 0, 0, r.method};
+    if (g.boolean) {
+      p.y = p.yMax = std::max(r.judged ? double(r.wrong) / r.judged : 0.0, floor);
+    } else {
+      p.y = std::max(r.errorMedian, floor);
+      p.yMax = std::max(r.errorMax, floor);
+    }
+    // Anything that is not a right answer is in the label (never hidden).
+    if (g.boolean && r.wrong) p.label += " (" + std::to_string(r.wrong) + " wrong)";
+    if (r.failures) p.label += " (" + std::to_string(r.failures) + " no answer)";
+    points.push_back(p);
+  }
+  // Axes per panel: x over the panel's times with room on the right for the labels; y fixed
+  // per group (distance: from below the floor to above the largest error; boolean: rates).
+  const int panelRows = int((shapes.size() + kColumns - 1) / kColumns);
+  const double panelW = kImageW / kColumns, panelH = (kPanelsTop - kPanelsBottom) * kImageH / panelRows;
+  double yTop = g.boolean ? 3.0 : 10.0;
+  for (const auto& p : points) yTop = std::max(yTop, p.yMax * 10);
+  std::vector<PanelAxes> axes;
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    double lo = 0, hi = 0, longest = 0;
+    for (const auto& p : points)
+      if (p.panel == int(s)) {
+        lo = lo == 0 ? p.x : std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+        longest = std::max(longest, double(p.label.size()));
+      }
+    PanelAxes a{0, 0, floor / 5, yTop, panelW - kLeftPx - kRightPx, panelH - kBottomPx - kTopPx};
+    // The data take the left part of the width; the rest holds the longest label.
+    const double decades = std::max(std::log10(hi / lo), 0.3) + 0.3;
+    const double dataShare = std::max(0.4, 1.0 - (kCharW * longest + 15) / a.widthPx);
+    a.xLo = lo / std::pow(10.0, 0.15);
+    a.xHi = a.xLo * std::pow(10.0, decades / dataShare);
+    axes.push_back(a);
+    std::vector<PlotPoint*> panel;
+    for (auto& p : points)
+      if (p.panel == int(s)) panel.push_back(&p);
+    placeLabels(panel, a);
+  }
+
+  const std::string csvName = name + ".csv";
+  {
+    std::ofstream csv(base + ".csv");
+    csv << "panel,shape,method_index,method,warm_start,median_ns,p99_ns,error_median,error_max,judged,wrong,failures,plotted_y,plotted_y_max,"
+           "label,label_x,label_y\n";
+    for (const auto& p : points) {
+      const GjkRow& r = *p.row;
+      char line[640];
+      std::snprintf(line, sizeof line, "%d,%s,%d,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%.4g,%.4g,%s,%.5g,%.5g\n", p.panel, shapes[p.panel].c_str(),
+                    p.method, r.method.c_str(), r.warmStart.c_str(), r.medianNs, r.p99Ns, r.errorMedian, r.errorMax, r.judged, r.wrong, r.failures,
+                    p.y, p.yMax, p.label.c_str(), p.labelX, p.labelY);
+      csv << line;
+    }
+  }
+  {
+    std::ofstream gp(base + ".gp");
+    gp << "# gnuplot script written by gjk_study (chapter 07): gnuplot " << name << ".gp\n";
+    gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
+    gp << "set output '" << name << ".png'\n";
+    gp << "set datafile separator ','\nset termoption noenhanced\n";
+    gp << "set multiplot title \"GJK, " << g.title << ": " << (g.boolean ? "wrong-answer rate" : "error")
+       << " against median time per query, one point per method, one panel per shape\"\n";
+    gp << "set logscale xy\nset grid\nset format y '%.0e'\nunset key\n";
+    gp << "set xlabel 'median time per query (ns)' offset 0,0.3\n";
+    gp << (g.boolean ? "set ylabel 'wrong answers / judged queries'\n" : "set ylabel '|d - d_ref|: median (point), maximum (bar)'\n");
+    for (std::size_t s = 0; s < shapes.size(); ++s) {
+      const double left = double(s % kColumns) * panelW, bottom = (1 - kPanelsTop) * kImageH + double(s / kColumns + 1) * panelH;
+      // Margins in screen fractions, so the plot area is where placeLabels assumed it.
+      gp << "set lmargin at screen " << (left + kLeftPx) / kImageW << "\nset rmargin at screen " << (left + panelW - kRightPx) / kImageW << "\n";
+      gp << "set bmargin at screen " << 1 - (bottom - kBottomPx) / kImageH << "\nset tmargin at screen " << 1 - (bottom - panelH + kTopPx) / kImageH
+         << "\n";
+      gp << "set xtics (" << xTics(axes[s].xLo, axes[s].xHi) << ")\n";
+      gp << "set xrange [" << axes[s].xLo << ":" << axes[s].xHi << "]\nset yrange [" << axes[s].yLo << ":" << axes[s].yHi << "]\n";
+      gp << "set title '" << shapes[s] << " (" << queries[shapes[s]] << " queries)' offset 0,-0.6\n";
+      gp << "plot ";
+      const std::string inPanel = "$1==" + std::to_string(s);
+      // Leader lines from a moved label back to its point.
+      gp << "'" << csvName << "' skip 1 using (" << inPanel << " ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle";
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        const Style st = styleOf(methods[m]);
+        const std::string filter = "(" + inPanel + " && $3==" + std::to_string(m) + " ? $6 : NaN)";
+        gp << ", \\\n     '" << csvName << "' skip 1 using " << filter << (g.boolean ? ":13 with points" : ":13:13:14 with yerrorbars") << " pt "
+           << st.point << " ps 1.6 lw 1.5 lc rgb '" << st.colour << "' notitle";
+        gp << ", \\\n     '" << csvName << "' skip 1 using (" << inPanel << " && $3==" << m << " ? $16 : NaN):17:15 with labels left font ',8' tc rgb '"
+           << st.colour << "' notitle";
+      }
+      gp << "\n";
+    }
+    // The key: one entry per method, and what the floor means.
+    gp << "set origin 0,0\nset size 1," << kPanelsBottom << "\nset lmargin 0\nset rmargin 0\nset tmargin 0\nset bmargin 0\n"
+       << "unset title\nunset logscale\nunset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\nset xrange [0:1]\nset yrange [0:1]\n";
+    gp << "set key at screen 0.5," << kPanelsBottom - 0.015 << " center top horizontal maxrows 1 width 2 samplen 1 font ',10'\n";
+    gp << "set label 1 \"" << (g.boolean ? "A wrong-answer rate of 0 is drawn at " : "An error of 0 is drawn at ") << format("%.0e", floor)
+       << (g.boolean ? "; a label says how many answers were wrong." : "; the bar reaches the maximum error over the queries.")
+       << " A label says when a method gave no answer on some queries.\" at screen 0.5,0.04 center font ',10'\n";
+    gp << "plot ";
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const Style st = styleOf(methods[m]);
+      gp << (m ? ", " : "") << "NaN with points pt " << st.point << " ps 1.6 lc rgb '" << st.colour << "' title '" << methods[m] << "'";
+    }
+    gp << "\nunset multiplot\n";
+  }
+  if (haveGnuplot) {
+    const std::string command = "cd '" + folder + "' && gnuplot '" + name + ".gp'";
+    if (std::system(command.c_str()) != 0) std::fprintf(stderr, "gjk_study: gnuplot failed on %s.gp\n", base.c_str());
+    else std::printf("wrote %s.png\n", base.c_str());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  std::printf("GJK comparison (%s run, seed %u); %s\n", o.study.quick ? "quick" : "full", o.study.seed, gjkx::study::peersPresent().c_str());
   std::printf("time per query: median and p99 over batches of 16; distance error |d - d_ref| (overlap = 0);\n");
   std::printf("boolean: wrong answers / judged queries against the exact reference\n");
-  const auto rows = gjkx::study::runGjkComparisons(options);
+  const auto rows = gjkx::study::runGjkComparisons(o.study);
   std::string last;
   for (const auto& r : rows) {
     if (r.workload != last) {
@@ -40,6 +474,16 @@ int main(int argc, char** argv) {
     std::printf("  %s\n", gjkx::study::formatGjkRow(r).c_str());
   }
   if (!last.empty()) std::printf("  best peer: %s\n", gjkx::study::gjkBestPeer(rows, last).c_str());
+  printFloatVsDouble(rows);
+
+  std::filesystem::create_directories(o.out);
+  writeMainTable(o.out + "/gjk-table.md", o, rows);
+  writeFloatVsDouble(o.out + "/gjk-float-vs-double.md", o, rows);
+  std::printf("\nwrote %s/gjk-table.md and %s/gjk-float-vs-double.md\n", o.out.c_str(), o.out.c_str());
+  const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
+  if (!haveGnuplot) std::printf("gnuplot not found: wrote the .csv and .gp files, skipped the plots\n");
+  for (const Group& g : kGroups) plotGroup(o.out, g, rows, haveGnuplot);
+
   std::printf("\n");
   for (const auto& line : gjkx::study::gjkRatioLines(rows)) std::printf("%s\n", line.c_str());
   return 0;
