@@ -140,7 +140,7 @@ void writeMainTable(const std::string& path, const Options& o, const std::vector
   std::ofstream md(path);
   md << provenance(o) << " Time: median and 99th percentile per query (ns), over batches of 16 queries timed together. "
      << "*vs best peer*: this row's median time divided by the fastest peer's on the same workload (below 1: faster than every peer). "
-     << "Distance error: |d - d_ref| against the exact long-double reference (an overlap counts as distance 0). "
+     << "Distance error: `|d - d_ref|` against the exact long-double reference (an overlap counts as distance 0). "
      << "Boolean: wrong answers / judged queries (pairs closer than 5e-4 but apart are not judged). "
      << "*failures*: queries without an answer.\n";
   for (const Group& g : kGroups) {

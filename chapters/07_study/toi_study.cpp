@@ -9,7 +9,9 @@
 // four tolerances; then draws one plot per workload into DIR (default figures/study):
 // toi-<workload>.csv and .gp, and toi-<workload>.png when gnuplot is installed (error of the
 // time of impact against the time per query, both log scales, one curve per method joined
-// across its settings, the misses of each method in the key).
+// across its settings, the misses of each method in the key). The tables are also written
+// into DIR as markdown, for the docs page of the study: toi-workloads.md, toi-table.md,
+// toi-float-vs-double.md and toi-ccd.md.
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
 // 2-core machine (references about 30 s of it), --quick about 20 s. Regenerate the kept
 // study figures with `build/chapters/07_study/toi_study --out figures/study`.
@@ -17,6 +19,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -139,18 +142,51 @@ void plotWorkload(const std::string& folder, const ToiWorkload& w, const std::ve
   }
 }
 
-void printFloatVsDouble(const std::vector<ToiRow>& rows) {
-  struct Sum {
-    int misses = 0, hits = 0, alarms = 0, clear = 0;
-    std::vector<double> errors, times;
-  };
-  std::vector<std::string> order;
-  std::map<std::string, std::map<std::string, Sum>> sums;  // family+setting -> scalar -> sum
+// The provenance line of every markdown table: the command, the run and the date.
+std::string provenance(const Options& o) {
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  std::string peersText;
+  for (const auto& p : peers::found()) peersText += (peersText.empty() ? "" : ", ") + p;
+  return "Written by `toi_study --out " + o.out + (o.study.quick ? " --quick" : "") + "` (" + (o.study.quick ? "quick" : "full") +
+         " run, seed " + std::to_string(o.study.seed) + ") on " + date + "; peers: " + (peersText.empty() ? "none" : peersText) + ".";
+}
+
+std::string fmt(const char* f, double x) {
+  if (std::isnan(x)) return "-";
+  char s[64];
+  std::snprintf(s, sizeof s, f, x);
+  return s;
+}
+
+// Text for a markdown table cell: a '|' would end the cell.
+std::string mdCell(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+// Every method of ours in float and in double, over all workloads together.
+struct ScalarSum {
+  int misses = 0, hits = 0, alarms = 0, clear = 0;
+  std::vector<double> errors, times;
+  double errMedian() const { return gjkx::toistudy::detail::median(errors); }
+  double errMax() const { return errors.empty() ? std::nan("") : *std::max_element(errors.begin(), errors.end()); }
+  double usMedian() const { return gjkx::toistudy::detail::median(times); }
+};
+struct FloatVsDouble {
+  std::vector<std::string> order;                                // "family setting"
+  std::map<std::string, std::map<std::string, ScalarSum>> sums;  // family+setting -> scalar -> sum
+};
+
+FloatVsDouble floatVsDouble(const std::vector<ToiRow>& rows) {
+  FloatVsDouble t;
   for (const auto& r : rows) {
     if (!r.ours) continue;
     const std::string key = r.family + " " + r.setting;
-    if (!sums.count(key)) order.push_back(key);
-    Sum& s = sums[key][r.scalar];
+    if (!t.sums.count(key)) t.order.push_back(key);
+    ScalarSum& s = t.sums[key][r.scalar];
     s.misses += r.misses;
     s.hits += r.refHits;
     s.alarms += r.falseAlarms;
@@ -158,21 +194,102 @@ void printFloatVsDouble(const std::vector<ToiRow>& rows) {
     s.errors.insert(s.errors.end(), r.errors.begin(), r.errors.end());
     s.times.push_back(r.medianUs);
   }
+  return t;
+}
+
+void printFloatVsDouble(const std::vector<ToiRow>& rows) {
+  FloatVsDouble t = floatVsDouble(rows);
   std::printf("\n== Float against double, every method of ours (all workloads together) ==\n");
   std::printf("%-22s | %-48s | %-48s\n", "method setting", "double: misses  f.alarms  err_med  err_max  us", "float: misses  f.alarms  err_med  err_max  us");
-  for (const auto& key : order) {
+  for (const auto& key : t.order) {
     auto cell = [&](const std::string& scalar) {
-      if (!sums[key].count(scalar)) return std::string("(not run)");
-      const Sum& s = sums[key][scalar];
+      if (!t.sums[key].count(scalar)) return std::string("(not run)");
+      const ScalarSum& s = t.sums[key][scalar];
       char text[160];
-      const double med = gjkx::toistudy::detail::median(s.errors);
-      const double mx = s.errors.empty() ? std::nan("") : *std::max_element(s.errors.begin(), s.errors.end());
-      std::snprintf(text, sizeof text, "%4d/%-4d %3d/%-4d %8.1e %8.1e %7.2f", s.misses, s.hits, s.alarms, s.clear, med, mx,
-                    gjkx::toistudy::detail::median(s.times));
+      std::snprintf(text, sizeof text, "%4d/%-4d %3d/%-4d %8.1e %8.1e %7.2f", s.misses, s.hits, s.alarms, s.clear, s.errMedian(), s.errMax(),
+                    s.usMedian());
       return std::string(text);
     };
     std::printf("%-22s | %-48s | %-48s\n", key.c_str(), cell("double").c_str(), cell("float").c_str());
   }
+}
+
+void writeFloatVsDouble(const std::string& path, const Options& o, const std::vector<ToiRow>& rows) {
+  FloatVsDouble t = floatVsDouble(rows);
+  std::ofstream md(path);
+  md << provenance(o) << " Every method of ours in double and in float, all workloads together: misses / reference hits, "
+     << "false alarms / clear misses, the time-of-impact error `|t - t_ref|` (median and maximum over the hits both report) and "
+     << "the median over the workloads of the median time per query (us).\n\n";
+  md << "| method | setting | misses, double | misses, float | false alarms, double | false alarms, float | error median, double | "
+        "error median, float | error max, double | error max, float | us double | us float |\n";
+  md << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const auto& key : t.order) {
+    const auto space = key.find(' ');
+    md << "| " << key.substr(0, space) << " | " << key.substr(space + 1) << " | ";
+    const bool both = t.sums[key].count("double") && t.sums[key].count("float");
+    const ScalarSum none;
+    const ScalarSum& d = t.sums[key].count("double") ? t.sums[key]["double"] : none;
+    const ScalarSum& f = t.sums[key].count("float") ? t.sums[key]["float"] : none;
+    auto ratio = [](int a, int b) { return std::to_string(a) + " / " + std::to_string(b); };
+    md << ratio(d.misses, d.hits) << " | " << (both ? ratio(f.misses, f.hits) : "(not run)") << " | " << ratio(d.alarms, d.clear) << " | "
+       << (both ? ratio(f.alarms, f.clear) : "(not run)") << " | " << fmt("%.1e", d.errMedian()) << " | " << fmt("%.1e", f.errMedian()) << " | "
+       << fmt("%.1e", d.errMax()) << " | " << fmt("%.1e", f.errMax()) << " | " << fmt("%.2f", d.usMedian()) << " | " << fmt("%.2f", f.usMedian())
+       << " |\n";
+  }
+}
+
+// The main table: one block per workload, every method and setting.
+void writeMainTable(const std::string& path, const Options& o, const ToiStudyResults& results) {
+  std::ofstream md(path);
+  md << provenance(o) << " Per workload and method: median and 99th-percentile time per query (us), misses / reference hits, "
+     << "false alarms / clear misses (queries the reference calls in between are not judged), the time-of-impact error "
+     << "`|t - t_ref|` over the hits both report (median, maximum; - when there are none or the method reports no time), and, for "
+     << "ours, the GJK runs per query.\n";
+  for (const auto& w : results.workloads) {
+    md << "\n**Time of impact, workload " << w.name << "** (" << w.queries.size() << " queries): " << mdCell(w.description) << "\n\n";
+    md << "| method | setting | scalar | median us | p99 us | misses | false alarms | error median | error max | GJK runs |\n";
+    md << "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    for (const auto& r : results.rows) {
+      if (r.workload != w.name) continue;
+      const bool highlight = r.family == "ours" && r.setting == "tol=1e-7" && r.scalar == "double";
+      md << "| " << (highlight ? "**" + r.family + "**" : r.family) << " | " << r.setting << " | " << r.scalar << " | " << fmt("%.2f", r.medianUs)
+         << " | " << fmt("%.2f", r.p99Us) << " | " << r.misses << " / " << r.refHits << " | " << r.falseAlarms << " / " << r.clearMisses << " | "
+         << (r.detectionOnly ? "(yes/no)" : fmt("%.1e", r.errMedian)) << " | " << (r.detectionOnly ? "(yes/no)" : fmt("%.1e", r.errMax)) << " | "
+         << (r.ours ? fmt("%.1f", r.meanGjkRuns) : "-") << " |\n";
+    }
+  }
+}
+
+void writeWorkloads(const std::string& path, const Options& o, const ToiStudyResults& results) {
+  std::ofstream md(path);
+  md << provenance(o) << " The time-of-impact workloads and their reference: long-double distance, Lipschitz-certified dense sampling, "
+     << "bisection to 1e-13. Queries the reference finds neither hit nor clear miss are not judged.\n\n";
+  md << "| workload | queries | reference hits | clear misses | not judged | what it is |\n| --- | ---: | ---: | ---: | ---: | --- |\n";
+  for (const auto& w : results.workloads) {
+    int hits = 0, clear = 0;
+    for (const auto& q : w.queries) {
+      hits += q.refHit;
+      clear += q.clearMiss;
+    }
+    md << "| " << w.name << " | " << w.queries.size() << " | " << hits << " | " << clear << " | " << int(w.queries.size()) - hits - clear << " | "
+       << mdCell(w.description) << " |\n";
+  }
+}
+
+void writeCcd(const std::string& path, const Options& o, const ToiStudyResults& results) {
+  std::ofstream md(path);
+  md << provenance(o) << " The sample queries of the external CCD benchmark, ours in double (the paper's variant) at four collision "
+     << "tolerances: false negatives (fn: the benchmark says they collide, we say no), false positives (fp), queries that "
+     << "ended at the iteration cap, and the time per query.\n\n";
+  if (results.ccd.empty()) {
+    md << "Not run: " << results.ccdNote << "\n";
+    return;
+  }
+  md << "| tolerance | queries | truth positives | our positives | fn | fp | capped | us per query |\n";
+  md << "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const auto& c : results.ccd)
+    md << "| " << fmt("%.0e", c.tolerance) << " | " << c.queries << " | " << c.truthPositives << " | " << c.positives << " | " << c.fn << " | "
+       << c.fp << " | " << c.capped << " | " << fmt("%.3f", c.usPerQuery) << " |\n";
 }
 
 }  // namespace
@@ -223,6 +340,12 @@ int main(int argc, char** argv) {
 
   std::printf("\n");
   for (const auto& line : toiRatioLines(results.rows)) std::printf("%s\n", line.c_str());
+
+  writeWorkloads(o.out + "/toi-workloads.md", o, results);
+  writeMainTable(o.out + "/toi-table.md", o, results);
+  writeFloatVsDouble(o.out + "/toi-float-vs-double.md", o, results.rows);
+  writeCcd(o.out + "/toi-ccd.md", o, results);
+  std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md and toi-ccd.md\n", o.out.c_str());
 
   const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
   if (!haveGnuplot) std::printf("gnuplot not found: wrote the .csv and .gp files, skipped the plots\n");
