@@ -134,17 +134,23 @@ std::string failureText(const GjkRow& r) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Markdown tables
+// Markdown tables. The docs page includes these files with Doxygen's \includedoc, which
+// joins an included file into one paragraph: so each file starts with a bold title, puts a
+// line break before every later title, and ends with its notes (command, run, date, what
+// the columns mean), which then read as a caption under the tables.
+
+void mdTitle(std::ostream& md, bool first, const std::string& title) { md << (first ? "" : "\n<br>") << "**" << title << "**\n\n"; }
+void mdNotes(std::ostream& md, const std::string& notes) { md << "\n<br>" << notes << "\n"; }
 
 void writeMainTable(const std::string& path, const Options& o, const std::vector<GjkRow>& rows) {
   std::ofstream md(path);
-  md << provenance(o) << " Time: median and 99th percentile per query (ns), over batches of 16 queries timed together. "
-     << "*vs best peer*: this row's median time divided by the fastest peer's on the same workload (below 1: faster than every peer). "
-     << "Distance error: `|d - d_ref|` against the exact long-double reference (an overlap counts as distance 0). "
-     << "Boolean: wrong answers / judged queries (pairs closer than 5e-4 but apart are not judged). "
-     << "*failures*: queries without an answer.\n";
+  const std::string notes = provenance(o) + " Time: median and 99th percentile per query (ns), over batches of 16 queries timed together. "
+      + "*vs best peer*: this row's median time divided by the fastest peer's on the same workload (below 1: faster than every peer). "
+      + "Distance error: `|d - d_ref|` against the exact long-double reference (an overlap counts as distance 0). "
+      + "Boolean: wrong answers / judged queries (pairs closer than 5e-4 but apart are not judged). "
+      + "*failures*: queries without an answer.";
   for (const Group& g : kGroups) {
-    md << "\n**GJK, " << g.title << "**\n\n";
+    mdTitle(md, &g == &kGroups[0], std::string("GJK, ") + g.title);
     if (g.boolean) {
       md << "| shape | method | warm start | median ns | p99 ns | wrong / judged | failures | vs best peer |\n";
       md << "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
@@ -163,6 +169,7 @@ void writeMainTable(const std::string& path, const Options& o, const std::vector
       md << failureText(r) << " | " << (best > 0 ? format("%.2f", r.medianNs / best) : std::string("-")) << " |\n";
     }
   }
+  mdNotes(md, notes);
 }
 
 // Ours in double against ours in float, workload by workload.
@@ -189,12 +196,12 @@ std::string statusCounts(const GjkRow& r) {
 
 void writeFloatVsDouble(const std::string& path, const Options& o, const std::vector<GjkRow>& rows) {
   std::ofstream md(path);
-  md << provenance(o) << " Ours in double (`ours-double`) against the same code in float (`ours-float`), same shapes and poses "
-     << "(rounded to float), same default settings. *cap / num.*: queries that ended in GjkStatus::IterationCap / "
-     << "GjkStatus::NumericalFailure (for boolean queries the matching IntersectionStatus), counted in an untimed pass. "
-     << "*float/double*: ratio of the median times.\n";
+  const std::string notes = provenance(o) + " Ours in double (`ours-double`) against the same code in float (`ours-float`), same shapes and poses "
+      + "(rounded to float), same default settings. *cap / num.*: queries that ended in GjkStatus::IterationCap / "
+      + "GjkStatus::NumericalFailure (for boolean queries the matching IntersectionStatus), counted in an untimed pass. "
+      + "*float/double*: ratio of the median times.";
   for (const bool boolean : {false, true}) {
-    md << "\n**GJK " << (boolean ? "boolean" : "distance") << " queries: float against double**\n\n";
+    mdTitle(md, !boolean, std::string("GJK ") + (boolean ? "boolean" : "distance") + " queries: float against double");
     if (boolean) {
       md << "| workload | wrong / judged, double | wrong / judged, float | cap / num., double | cap / num., float | ns double | ns float "
             "| float/double |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
@@ -215,6 +222,7 @@ void writeFloatVsDouble(const std::string& path, const Options& o, const std::ve
          << format("%.1f", p.f->medianNs) << " | " << format("%.2f", p.f->medianNs / p.d->medianNs) << " |\n";
     }
   }
+  mdNotes(md, notes);
 }
 
 void printFloatVsDouble(const std::vector<GjkRow>& rows) {

@@ -167,6 +167,15 @@ std::string mdCell(const std::string& text) {
   return out;
 }
 
+// The docs page includes the markdown files with Doxygen's \includedoc, which joins an
+// included file into one paragraph: so a file starts with a title or a table, puts a line
+// break before every later title, and ends with its notes (command, run, date, what the
+// columns mean), which then read as a caption under the tables.
+void mdTitle(std::ostream& md, bool first, const std::string& bold, const std::string& rest) {
+  md << (first ? "" : "\n<br>") << "**" << bold << "**" << rest << "\n\n";
+}
+void mdNotes(std::ostream& md, const std::string& notes) { md << "\n<br>" << notes << "\n"; }
+
 // Every method of ours in float and in double, over all workloads together.
 struct ScalarSum {
   int misses = 0, hits = 0, alarms = 0, clear = 0;
@@ -217,9 +226,9 @@ void printFloatVsDouble(const std::vector<ToiRow>& rows) {
 void writeFloatVsDouble(const std::string& path, const Options& o, const std::vector<ToiRow>& rows) {
   FloatVsDouble t = floatVsDouble(rows);
   std::ofstream md(path);
-  md << provenance(o) << " Every method of ours in double and in float, all workloads together: misses / reference hits, "
-     << "false alarms / clear misses, the time-of-impact error `|t - t_ref|` (median and maximum over the hits both report) and "
-     << "the median over the workloads of the median time per query (us).\n\n";
+  const std::string notes = provenance(o) + " Every method of ours in double and in float, all workloads together: misses / reference hits, "
+      + "false alarms / clear misses, the time-of-impact error `|t - t_ref|` (median and maximum over the hits both report) and "
+      + "the median over the workloads of the median time per query (us).";
   md << "| method | setting | misses, double | misses, float | false alarms, double | false alarms, float | error median, double | "
         "error median, float | error max, double | error max, float | us double | us float |\n";
   md << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
@@ -236,17 +245,19 @@ void writeFloatVsDouble(const std::string& path, const Options& o, const std::ve
        << fmt("%.1e", d.errMax()) << " | " << fmt("%.1e", f.errMax()) << " | " << fmt("%.2f", d.usMedian()) << " | " << fmt("%.2f", f.usMedian())
        << " |\n";
   }
+  mdNotes(md, notes);
 }
 
 // The main table: one block per workload, every method and setting.
 void writeMainTable(const std::string& path, const Options& o, const ToiStudyResults& results) {
   std::ofstream md(path);
-  md << provenance(o) << " Per workload and method: median and 99th-percentile time per query (us), misses / reference hits, "
-     << "false alarms / clear misses (queries the reference calls in between are not judged), the time-of-impact error "
-     << "`|t - t_ref|` over the hits both report (median, maximum; - when there are none or the method reports no time), and, for "
-     << "ours, the GJK runs per query.\n";
+  const std::string notes = provenance(o) + " Per workload and method: median and 99th-percentile time per query (us), misses / reference hits, "
+      + "false alarms / clear misses (queries the reference calls in between are not judged), the time-of-impact error "
+      + "`|t - t_ref|` over the hits both report (median, maximum; - when there are none or the method reports no time), and, for "
+      + "ours, the GJK runs per query.";
   for (const auto& w : results.workloads) {
-    md << "\n**Time of impact, workload " << w.name << "** (" << w.queries.size() << " queries): " << mdCell(w.description) << "\n\n";
+    mdTitle(md, &w == &results.workloads.front(), "Time of impact, workload " + w.name,
+            " (" + std::to_string(w.queries.size()) + " queries): " + mdCell(w.description));
     md << "| method | setting | scalar | median us | p99 us | misses | false alarms | error median | error max | GJK runs |\n";
     md << "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const auto& r : results.rows) {
@@ -258,12 +269,13 @@ void writeMainTable(const std::string& path, const Options& o, const ToiStudyRes
          << (r.ours ? fmt("%.1f", r.meanGjkRuns) : "-") << " |\n";
     }
   }
+  mdNotes(md, notes);
 }
 
 void writeWorkloads(const std::string& path, const Options& o, const ToiStudyResults& results) {
   std::ofstream md(path);
-  md << provenance(o) << " The time-of-impact workloads and their reference: long-double distance, Lipschitz-certified dense sampling, "
-     << "bisection to 1e-13. Queries the reference finds neither hit nor clear miss are not judged.\n\n";
+  const std::string notes = provenance(o) + " The time-of-impact workloads and their reference: long-double distance, Lipschitz-certified dense sampling, "
+      + "bisection to 1e-13. Queries the reference finds neither hit nor clear miss are not judged.";
   md << "| workload | queries | reference hits | clear misses | not judged | what it is |\n| --- | ---: | ---: | ---: | ---: | --- |\n";
   for (const auto& w : results.workloads) {
     int hits = 0, clear = 0;
@@ -274,15 +286,17 @@ void writeWorkloads(const std::string& path, const Options& o, const ToiStudyRes
     md << "| " << w.name << " | " << w.queries.size() << " | " << hits << " | " << clear << " | " << int(w.queries.size()) - hits - clear << " | "
        << mdCell(w.description) << " |\n";
   }
+  mdNotes(md, notes);
 }
 
 void writeCcd(const std::string& path, const Options& o, const ToiStudyResults& results) {
   std::ofstream md(path);
-  md << provenance(o) << " The sample queries of the external CCD benchmark, ours in double (the paper's variant) at four collision "
-     << "tolerances: false negatives (fn: the benchmark says they collide, we say no), false positives (fp), queries that "
-     << "ended at the iteration cap, and the time per query.\n\n";
+  const std::string notes = provenance(o) + " The sample queries of the external CCD benchmark, ours in double (the paper's variant) at four collision "
+      + "tolerances: false negatives (fn: the benchmark says they collide, we say no), false positives (fp), queries that "
+      + "ended at the iteration cap, and the time per query.";
   if (results.ccd.empty()) {
     md << "Not run: " << results.ccdNote << "\n";
+    mdNotes(md, notes);
     return;
   }
   md << "| tolerance | queries | truth positives | our positives | fn | fp | capped | us per query |\n";
@@ -290,6 +304,7 @@ void writeCcd(const std::string& path, const Options& o, const ToiStudyResults& 
   for (const auto& c : results.ccd)
     md << "| " << fmt("%.0e", c.tolerance) << " | " << c.queries << " | " << c.truthPositives << " | " << c.positives << " | " << c.fn << " | "
        << c.fp << " | " << c.capped << " | " << fmt("%.3f", c.usPerQuery) << " |\n";
+  mdNotes(md, notes);
 }
 
 }  // namespace
