@@ -319,14 +319,14 @@ void placeLabels(std::vector<PlotPoint*>& points, const PanelAxes& axes) {
 }
 
 // Tics at 1, 2, 5 times the powers of ten inside [lo, hi] (only the powers when that is
-// too many), so that a panel spanning less than a decade still has numbers on its x axis.
+// too many to fit), so that a panel spanning less than a decade still has numbers on its x axis.
 std::string xTics(double lo, double hi) {
   for (const bool coarse : {false, true}) {
     std::vector<double> tics;
     for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
       for (const double m : {1.0, 2.0, 5.0})
         if ((!coarse || m == 1.0) && m * decade >= lo && m * decade <= hi) tics.push_back(m * decade);
-    if (tics.size() <= 9 || coarse) {
+    if (tics.size() <= 7 || coarse) {
       std::string text;
       for (const double t : tics) text += (text.empty() ? "" : ", ") + format("'%g'", t) + " " + format("%g", t);
       return text;
