@@ -1,0 +1,889 @@
+// The stiff and extreme cases of the study (chapter 07): ten time-of-impact queries and six
+// static pairs built to break a method (contact exactly at round-off, degenerate
+// Minkowski differences, scales that float cannot hold, rotations that endpoints cannot
+// tell apart), each with an independent reference, a stated rule for "right", and a
+// watchdog that turns a hang or a crash of a method into a table cell.
+//
+// The methods of ours are here (the test tests/brent/test_extreme_cases.cpp runs them
+// without any peer); the peers are added by extreme_cases.cpp, which prints the table.
+//
+// References (independent of every method; no GJK, no support mapping):
+// - time of impact: workloads.hpp's long-double brute force (feature pairs of the cores,
+//   a Lipschitz bound on d(t), bisection to 1e-13): t_ref is the first time the bodies
+//   come within 1e-10; and a closed form where the geometry gives one, which must agree;
+// - static pairs: the same long-double distance at the two poses, and a closed form.
+// A 2D form ("planar twin", for Box2D) is given where the case is a prism problem:
+// boxes moving in the plane z = 0 and turning about z, Q's z-range holding P's, so the
+// bodies touch exactly when their cross-sections do; the twin's own 2D reference must
+// give the same t_ref.
+//
+// "Right", per cell:
+// - time of impact, the reference has contact (Expect::Hit): the method reports a hit at
+//   a time t with d_ref(t) <= delta (not early: the bodies are within delta of touching)
+//   and t <= t_ref + delta / L (not late: past the first contact they can have
+//   interpenetrated by at most delta; L bounds how fast d(t) changes). delta is stated per
+//   case. A yes/no method (the swept test) is judged on its yes/no only.
+// - no contact (Expect::NoHit): the method reports no hit.
+// - a gap below every method's resolution (Expect::Either): no hit, or a hit that meets
+//   the hit rule above (t_ref being the first time the gap is under 1e-10).
+// - static distance methods: |d - d_ref| <= tau (an overlap counts as d = 0), with
+//   tau = 1e-6 times the case's scale (its largest coordinate, at least 1): 8 float ulps;
+//   boolean methods: "intersecting" exactly when d_ref = 0, "disjoint" when d_ref > tau,
+//   either in between.
+// Otherwise the cell is wrong (with why), NaN (a non-finite answer or a numerical-failure
+// status), cap (an iteration-cap status), hang (the watchdog's limit ran out) or crash (a
+// signal, or an exception thrown on these valid inputs).
+#pragma once
+
+#include "workloads.hpp"
+
+#include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/gjk/gjk.hpp>
+#include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/supporting_distance/intersection.hpp>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace gjkx::extreme {
+
+using toistudy::LD;
+using toistudy::MotionSpec;
+using toistudy::ShapeKind;
+using toistudy::ShapeSpec;
+using toistudy::ToiQuery;
+
+/// What a correct method must say about a time-of-impact case (see the file comment).
+enum class Expect { Hit, NoHit, Either };
+
+/// One time-of-impact case with its reference.
+struct ToiCase {
+  std::string name;   ///< e.g. "touching faces"
+  std::string setup;  ///< what the bodies do, in one line
+  ToiQuery query;     ///< the 3D query; refHit and tRef from the long-double reference
+  bool hasPlanarForm = false;
+  ToiQuery planar;    ///< the 2D form (cross-sections in z = 0), when hasPlanarForm
+  Expect expect = Expect::Hit;
+  double delta = 0.01;  ///< the judging tolerance of a hit (a length)
+  std::string deltaWhy;
+  double closedForm = std::numeric_limits<double>::quiet_NaN();  ///< t_ref by a closed form, NaN if none
+  double lipschitz = 0;  ///< L of the reference: |d'(t)| <= L
+};
+
+/// One static pair with its reference.
+struct StaticCase {
+  std::string name, setup;
+  ShapeSpec P, Q;
+  Pose<double> poseP, poseQ;
+  double reference = 0;  ///< long-double brute-force distance (0: touching or overlapping)
+  double closedForm = std::numeric_limits<double>::quiet_NaN();
+  double scale = 1;  ///< largest coordinate (at least 1)
+  double tau = 1e-6;  ///< 1e-6 * scale
+};
+
+// ---------------------------------------------------------------------------------------
+// Building the cases
+
+namespace build {
+
+inline Eigen::Matrix3d rotZ(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+inline Eigen::Matrix3d rotAxis(double a, const Eigen::Vector3d& axis) {
+  return Eigen::AngleAxisd(a, axis.normalized()).toRotationMatrix();
+}
+
+/// A square (or rectangle) of zero thickness in z = 0: a polygon.
+inline ShapeSpec rectangle(double hx, double hy) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Polygon;
+  s.hull = std::make_shared<const Polytope<double>>(
+      Polytope<double>::polygon({{-hx, -hy, 0}, {hx, -hy, 0}, {hx, hy, 0}, {-hx, hy, 0}}));
+  return s;
+}
+
+/// The cross-section in z = 0 of a box moving in that plane.
+inline ShapeSpec crossSection(const ShapeSpec& s) {
+  if (s.kind != ShapeKind::Box) throw std::logic_error("extreme cases: only boxes have a planar twin here");
+  return rectangle(s.halfExtents.x(), s.halfExtents.y());
+}
+
+inline bool inPlane(const MotionSpec& m) {
+  const Eigen::Matrix3d R = m.R0;
+  return m.p0.z() == 0 && m.v.z() == 0 && m.a.z() == 0 && m.w.x() == 0 && m.w.y() == 0 && R(2, 2) == 1 && R(0, 2) == 0 &&
+         R(1, 2) == 0;
+}
+
+/// The 2D form of a prism query: same motions, cross-sections for the shapes.
+inline ToiQuery planarTwin(const ToiQuery& q) {
+  if (!inPlane(q.motionP) || !inPlane(q.motionQ)) throw std::logic_error("extreme cases: a planar twin needs motions in z = 0");
+  // Contact of the prisms is contact of the cross-sections only if Q's z-range holds P's.
+  if (q.P.halfExtents.z() > q.Q.halfExtents.z()) throw std::logic_error("extreme cases: P must be thinner in z than Q");
+  ToiQuery t = q;
+  t.planar = true;
+  t.P = crossSection(q.P);
+  t.Q = crossSection(q.Q);
+  return t;
+}
+
+/// The first root in [0, 1] of a gap function g(t) (g(0) > 0) by scanning and bisection in
+/// long double: the closed forms below are "gap(t) = 0" for one moving feature.
+template <typename G>
+double firstRoot(G&& gap, int scan = 20000) {
+  LD ta = 0;
+  LD ga = gap(ta);
+  if (ga <= 0) return 0;
+  for (int k = 1; k <= scan; ++k) {
+    const LD tb = LD(k) / scan, gb = gap(tb);
+    if (gb <= 0) {
+      LD lo = ta, hi = tb;
+      for (int it = 0; it < 200; ++it) {
+        const LD mid = (lo + hi) / 2;
+        (gap(mid) > 0 ? lo : hi) = mid;
+      }
+      return double(hi);
+    }
+    ta = tb;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The lowest y of a z-rotated box's cross-section (half extents hx, hy, angle a), relative to its centre.
+inline LD lowestY(LD hx, LD hy, LD a) { return -(hx * std::abs(std::sin(a)) + hy * std::abs(std::cos(a))); }
+inline LD rightmostX(LD hx, LD hy, LD a) { return hx * std::abs(std::cos(a)) + hy * std::abs(std::sin(a)); }
+
+}  // namespace build
+
+/// Fills the references of a time-of-impact case (and of its twin), and L.
+inline void computeReference(ToiCase& c) {
+  toistudy::computeReference(c.query);
+  toistudy::ref::DistanceFunction d(c.query);
+  c.lipschitz = double(d.lipschitz());
+  if (c.hasPlanarForm) toistudy::computeReference(c.planar);
+}
+
+/// The ten time-of-impact cases, references computed.
+inline std::vector<ToiCase> makeToiCases() {
+  using build::rotAxis;
+  using build::rotZ;
+  using toistudy::boxSpec;
+  using V = Eigen::Vector3d;
+  std::vector<ToiCase> out;
+  auto add = [&](ToiCase c, bool planar) {
+    if (planar) {
+      c.hasPlanarForm = true;
+      c.planar = build::planarTwin(c.query);
+    }
+    computeReference(c);
+    out.push_back(std::move(c));
+  };
+  const ShapeSpec unitP = boxSpec(V(0.5, 0.5, 0.3)), unitQ = boxSpec(V(0.5, 0.5, 0.5));
+  {
+    ToiCase c;
+    c.name = "touching faces";
+    c.setup = "unit boxes; P's face comes down flush on Q's face and stops there exactly at t = 1 (d(1) = 0)";
+    c.query.P = unitP;
+    c.query.Q = unitQ;
+    c.query.motionP.p0 = V(0.3, 1.5, 0);
+    c.query.motionP.v = V(0.2, -0.5, 0);
+    c.closedForm = 1 - 1e-10 / 0.5;  // d(t) = 0.5 (1 - t) reaches 1e-10 at 1 - 2e-10
+    c.deltaWhy = "1% of the boxes' size";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "sub-epsilon separation";
+    c.setup = "unit boxes; P slides along Q's face at a gap of 1e-12 all the interval";
+    c.query.P = unitP;
+    c.query.Q = unitQ;
+    c.query.motionP.p0 = V(-0.6, 1 + 1e-12, 0);
+    c.query.motionP.v = V(1.2, 0, 0);
+    c.expect = Expect::Either;
+    c.closedForm = 0;  // the gap (1 + 1e-12) - 1 is under 1e-10 from the start
+    c.deltaWhy = "1% of the boxes' size";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "coincident origins";
+    c.setup = "P and Q start with the same origin (deeply overlapping), P leaves at speed 1.6 turning 2 rad";
+    c.query.P = boxSpec(V(0.5, 0.25, 0.3));
+    c.query.Q = boxSpec(V(0.4, 0.4, 0.5));
+    c.query.motionP.R0 = rotZ(0.3);
+    c.query.motionP.v = V(1.5, 0.5, 0);
+    c.query.motionP.w = V(0, 0, 2);
+    c.closedForm = 0;
+    c.deltaWhy = "1% of the boxes' size";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "degenerate simplices";
+    c.setup = "two squares of zero thickness in one plane (flat Minkowski difference), edges meeting parallel";
+    c.query.P = build::rectangle(0.5, 0.5);
+    c.query.Q = build::rectangle(0.5, 0.5);
+    c.query.planar = true;  // the reference in 2D (the shapes are flat)
+    c.query.motionP.p0 = V(-2, 0.3, 0);
+    c.query.motionP.v = V(2.2, 0, 0);
+    c.closedForm = (1 - 1e-10) / 2.2;  // P's right edge x = -1.5 + 2.2 t meets Q's left edge x = -0.5
+    c.deltaWhy = "1% of the squares' size";
+    add(c, false);
+    out.back().hasPlanarForm = true;  // it is its own 2D form
+    out.back().planar = out.back().query;
+  }
+  {
+    ToiCase c;
+    c.name = "size ratio 10^4";
+    c.setup = "a box of half size 0.01 turning 3 rad falls at speed 1.1 on a box of half size 100";
+    c.query.P = boxSpec(V(0.01, 0.01, 0.01));
+    c.query.Q = boxSpec(V(100, 100, 100));
+    c.query.motionP.p0 = V(3, 100.51, 0);
+    c.query.motionP.v = V(0.4, -1, 0);
+    c.query.motionP.w = V(0, 0, 3);
+    c.closedForm = build::firstRoot([](LD t) { return LD(100.51) - t + build::lowestY(LD(0.01), LD(0.01), 3 * t) - 100 - LD(1e-10); });
+    c.delta = 1e-3;
+    c.deltaWhy = "5% of the small box's size";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "coordinates near 10^5";
+    c.setup = "unit boxes at x, y = 1e5 (float spacing there: 0.0078); P turning 0.5 rad meets Q at speed 2";
+    c.query.P = unitP;
+    c.query.Q = unitQ;
+    c.query.motionQ.p0 = V(1e5, 1e5, 0);
+    c.query.motionP.p0 = V(1e5 - 2, 1e5 + 0.25, 0);
+    c.query.motionP.v = V(2, 0, 0);
+    c.query.motionP.w = V(0, 0, 0.5);
+    // P's rightmost point reaches Q's left face x = 1e5 - 0.5 (within Q's y-range: checked by the reference).
+    c.closedForm = build::firstRoot([](LD t) { return LD(1e5) - 0.5L - (LD(1e5) - 2 + 2 * t + build::rightmostX(0.5L, 0.5L, 0.5L * t)) - LD(1e-10); });
+    c.delta = 0.05;
+    c.deltaWhy = "6 float spacings at 1e5";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "half a turn per interval";
+    c.setup = "a rod (half size 1 x 0.05) turns by pi about z: the same set at t = 0 and 1, sweeping through Q on the way";
+    c.query.P = boxSpec(V(1, 0.05, 0.3));
+    c.query.Q = boxSpec(V(0.1, 0.1, 0.5));
+    c.query.motionP.w = V(0, 0, M_PI);
+    c.query.motionQ.p0 = V(0.3, 0.75, 0);
+    c.deltaWhy = "1% of the boxes' size";
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "thin rod spinning";
+    c.setup = "a rod 2 long and 0.004 thick spins 12 rad about a tilted axis; its end sweeps through a cube of side 0.06";
+    c.query.P = boxSpec(V(1, 0.002, 0.002));
+    c.query.Q = boxSpec(V(0.03, 0.03, 0.03));
+    c.query.motionP.v = V(0.1, 0.05, 0);
+    c.query.motionP.w = 12 * V(0.2, 0.3, 0.93).normalized();
+    // Q stands where the rod's point at 0.8 along it passes at t = 0.37.
+    const auto [R, p] = c.query.motionP.poseAt(0.37);
+    c.query.motionQ.p0 = p + R * V(0.8, 0, 0);
+    c.query.motionQ.R0 = rotAxis(0.6, V(1, 1, 0));
+    c.delta = 1e-3;
+    c.deltaWhy = "a quarter of the rod's thickness";
+    add(c, false);
+  }
+  {
+    ToiCase c;
+    c.name = "starting within tolerance, separating";
+    // The gap is inside the tolerance (1e-5) and 32 float ulps wide: above the round-off GJK calls an
+    // overlap (16 eps times the size; below it, sub-epsilon separation is the case).
+    c.setup = "unit boxes 2^-18 = 3.8e-6 apart at t = 0 (inside the tolerances, 1e-5), P moving away and turning 0.2 rad";
+    c.query.P = unitP;
+    c.query.Q = unitQ;
+    c.query.motionP.p0 = V(0, 1 + std::ldexp(1.0, -18), 0);
+    c.query.motionP.v = V(0.3, 0.5, 0);
+    c.query.motionP.w = V(0, 0, 0.2);
+    c.expect = Expect::NoHit;
+    add(c, true);
+  }
+  {
+    ToiCase c;
+    c.name = "two fast bodies";
+    c.setup = "a capsule and a box, each at speed 100 (over 100 body lengths per interval) and tumbling, meet head on";
+    c.query.P = toistudy::capsuleSpec(0.3, 0.1);
+    c.query.Q = boxSpec(V(0.2, 0.15, 0.1));
+    c.query.motionP.p0 = V(-50, 0.1, 0.05);
+    c.query.motionP.R0 = rotAxis(0.9, V(1, 0, 1));
+    c.query.motionP.v = V(100, 0, 0);
+    c.query.motionP.w = V(1.5, 2, 0);  // turns under half a revolution: the peers' end poses tell the motion
+    c.query.motionQ.p0 = V(50, -0.05, 0);
+    c.query.motionQ.R0 = rotAxis(0.4, V(0, 1, 1));
+    c.query.motionQ.v = V(-100, 0, 0);
+    c.query.motionQ.w = V(0, 1, 2.5);
+    c.deltaWhy = "about 3% of the smaller body's size";
+    add(c, false);
+  }
+  return out;
+}
+
+/// The long-double distance between two shapes at two poses (workloads.hpp's brute force).
+inline double referenceDistance(const StaticCase& c) {
+  ToiQuery q;
+  q.P = c.P;
+  q.Q = c.Q;
+  q.motionP.p0 = c.poseP.translation;
+  q.motionP.R0 = c.poseP.rotation;
+  q.motionQ.p0 = c.poseQ.translation;
+  q.motionQ.R0 = c.poseQ.rotation;
+  q.planar = c.P.kind == ShapeKind::Polygon && c.Q.kind == ShapeKind::Polygon && c.poseP.translation.z() == 0 &&
+             c.poseQ.translation.z() == 0;
+  toistudy::ref::DistanceFunction d(q);
+  return double(d(0));
+}
+
+/// The six static cases, references computed.
+inline std::vector<StaticCase> makeStaticCases() {
+  using build::rotAxis;
+  using build::rotZ;
+  using toistudy::boxSpec;
+  using V = Eigen::Vector3d;
+  std::vector<StaticCase> out;
+  auto pose = [](const Eigen::Matrix3d& R, const V& p) {
+    Pose<double> x;
+    x.rotation = R;
+    x.translation = p;
+    return x;
+  };
+  auto add = [&](StaticCase c) {
+    c.reference = referenceDistance(c);
+    c.scale = std::max({1.0, c.poseP.translation.norm() + c.P.boundingRadius(), c.poseQ.translation.norm() + c.Q.boundingRadius()});
+    c.tau = 1e-6 * c.scale;
+    out.push_back(std::move(c));
+  };
+  const ShapeSpec unitP = boxSpec(V(0.5, 0.5, 0.3)), unitQ = boxSpec(V(0.5, 0.5, 0.5));
+  const Eigen::Matrix3d R = rotAxis(0.7, V(1, 2, 3));
+  {
+    StaticCase c{"touching faces", "unit boxes face to face, P slid half a face sideways (exact: d = 0)", unitP, unitQ,
+                 pose(Eigen::Matrix3d::Identity(), V(0.5, 1, 0)), pose(Eigen::Matrix3d::Identity(), V::Zero())};
+    c.closedForm = 0;
+    add(c);
+  }
+  {
+    StaticCase c{"sub-epsilon separation", "the same, turned together by 0.7 rad, a gap of 1e-12 (under float's resolution)", unitP,
+                 unitQ, pose(R, R * V(0.2, 1 + 1e-12, 0.1)), pose(R, V::Zero())};
+    c.closedForm = 1e-12;
+    add(c);
+  }
+  {
+    const ShapeSpec box = boxSpec(V(0.5, 0.4, 0.3));
+    StaticCase c{"coincident origins", "two identical boxes at the same pose (centre-to-centre direction zero)", box, box,
+                 pose(R, V(0.1, 0.2, 0.3)), pose(R, V(0.1, 0.2, 0.3))};
+    c.closedForm = 0;
+    add(c);
+  }
+  {
+    StaticCase c{"degenerate simplices", "two squares of zero thickness in one plane, overlapping (flat Minkowski difference)",
+                 build::rectangle(0.5, 0.5), build::rectangle(0.5, 0.5), pose(rotZ(0.4), V(0.8, 0.3, 0)),
+                 pose(Eigen::Matrix3d::Identity(), V::Zero())};
+    c.closedForm = 0;
+    add(c);
+  }
+  {
+    const ShapeSpec small = boxSpec(V(0.01, 0.01, 0.01)), big = boxSpec(V(100, 100, 100));
+    // The small box's lowest point (turned by R) 0.005 above the big box's top face y = 100.
+    const double below = 0.01 * (std::abs(R(1, 0)) + std::abs(R(1, 1)) + std::abs(R(1, 2)));
+    StaticCase c{"size ratio 10^4", "a box of half size 0.01, turned, 0.005 above a box of half size 100", small, big,
+                 pose(R, V(3, 100 + 0.005 + below, 0.7)), pose(Eigen::Matrix3d::Identity(), V::Zero())};
+    c.closedForm = 0.005;
+    add(c);
+  }
+  {
+    // P turned by Rz(0.3) Rx(0.2), its corner of lowest x placed 0.3 right of Q's face x = 1e5 + 0.5, at
+    // (y, z) = (1e5 + 0.1, 0.05) on that face, so the closest points are that corner and the face.
+    const Eigen::Matrix3d Rp = rotZ(0.3) * rotAxis(0.2, V(1, 0, 0));
+    const V corner = Rp * V(Rp(0, 0) > 0 ? -0.5 : 0.5, Rp(0, 1) > 0 ? -0.5 : 0.5, Rp(0, 2) > 0 ? -0.3 : 0.3);
+    StaticCase c{"coordinates near 10^5", "unit boxes at 1e5 (float spacing 0.0078), P turned, a corner 0.3 from Q's face", unitP,
+                 unitQ, pose(Rp, V(1e5 + 0.5 + 0.3, 1e5 + 0.1, 0.05) - corner), pose(Eigen::Matrix3d::Identity(), V(1e5, 1e5, 0))};
+    c.closedForm = 0.3;
+    add(c);
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Answers and the watchdog
+
+/// How a method's answer came back (a plain struct: it crosses a pipe from the child).
+enum class AnswerKind : int { Answer, Cap, NumericalFailure, Exception };
+
+/// A time-of-impact answer.
+struct ToiAnswer {
+  AnswerKind kind = AnswerKind::Answer;
+  bool hit = false;
+  double time = 1;
+  char status[48] = "";   ///< the method's own status name, if it has one
+  char message[160] = "";  ///< an exception's what()
+};
+
+/// A static answer: a distance (overlap: <= 0) or a yes/no.
+struct GjkAnswer {
+  AnswerKind kind = AnswerKind::Answer;
+  bool boolean = false;
+  bool overlap = false;  ///< boolean methods
+  double distance = 0;   ///< distance methods (<= 0: overlapping)
+  char status[48] = "";
+  char message[160] = "";
+};
+
+inline void setText(char* out, std::size_t size, const std::string& text) {
+  std::snprintf(out, size, "%s", text.c_str());
+}
+
+/// How a guarded run ended.
+struct GuardedRun {
+  bool finished = false;  ///< the child wrote its answer and exited
+  bool timedOut = false;  ///< the watchdog killed it
+  int signal = 0;         ///< the signal that ended it otherwise
+  double seconds = 0;
+};
+
+/// Runs `f()` (returning a trivially copyable Answer) in a fork()ed child, with `limit`
+/// seconds of wall time: a child that runs longer is killed (a hang), one that dies of a
+/// signal crashed. An exception is caught in the child and sent back as an answer.
+template <typename Answer, typename F>
+GuardedRun guarded(F&& f, double limit, Answer& answer) {
+  static_assert(std::is_trivially_copyable_v<Answer>, "the answer crosses a pipe");
+  GuardedRun run;
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("extreme cases: pipe() failed");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("extreme cases: fork() failed");
+  if (pid == 0) {
+    close(fds[0]);
+    // The default actions, whatever handlers the caller installed (a test framework's, say):
+    // a fault kills the child, and the parent reads the signal.
+    for (const int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGTERM, SIGINT, SIGALRM}) std::signal(sig, SIG_DFL);
+    alarm(unsigned(std::ceil(limit)) + 2);  // a second watchdog, should the parent's fail
+    Answer a{};
+    try {
+      a = f();
+    } catch (const std::exception& e) {
+      a = Answer{};
+      a.kind = AnswerKind::Exception;
+      setText(a.message, sizeof a.message, e.what());
+    } catch (...) {
+      a = Answer{};
+      a.kind = AnswerKind::Exception;
+      setText(a.message, sizeof a.message, "unknown exception");
+    }
+    const ssize_t written = write(fds[1], &a, sizeof a);
+    _exit(written == ssize_t(sizeof a) ? 0 : 3);
+  }
+  close(fds[1]);
+  int status = 0;
+  auto pause = std::chrono::microseconds(20);
+  for (;;) {
+    const pid_t r = waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      run.timedOut = true;
+      break;
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(2000));
+  }
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!run.timedOut) {
+    if (WIFSIGNALED(status)) {
+      run.signal = WTERMSIG(status);
+      if (run.signal == SIGALRM) run.timedOut = true;
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+      run.finished = read(fds[0], &answer, sizeof answer) == ssize_t(sizeof answer);
+    }
+  }
+  close(fds[0]);
+  return run;
+}
+
+// ---------------------------------------------------------------------------------------
+// Verdicts
+
+/// A cell of the table.
+enum class Verdict { Right, Wrong, NaN, Hang, Crash, Cap, NotApplicable };
+
+inline const char* toString(Verdict v) {
+  switch (v) {
+    case Verdict::Right: return "right";
+    case Verdict::Wrong: return "wrong";
+    case Verdict::NaN: return "NaN";
+    case Verdict::Hang: return "hang";
+    case Verdict::Crash: return "crash";
+    case Verdict::Cap: return "cap";
+    case Verdict::NotApplicable: return "n/a";
+  }
+  return "?";
+}
+
+/// A judged cell: the verdict, a short reason ("miss", "late +3e-02"), and what the method said.
+struct Cell {
+  Verdict verdict = Verdict::NotApplicable;
+  std::string reason;  ///< short, for the table
+  std::string said;    ///< what the method answered, for the notes
+  double seconds = 0;
+  std::string text() const { return reason.empty() ? toString(verdict) : std::string(toString(verdict)) + ": " + reason; }
+};
+
+inline std::string sci(double x, int digits = 1) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.*e", digits, x);
+  return s;
+}
+
+/// The parts of a guarded run that do not depend on the answer: hang, crash, exception.
+template <typename Answer>
+bool judgeRun(const GuardedRun& run, const Answer& a, Cell& cell) {
+  cell.seconds = run.seconds;
+  if (run.timedOut) {
+    cell.verdict = Verdict::Hang;
+    cell.said = "killed by the watchdog after " + sci(run.seconds, 1) + " s";
+    return true;
+  }
+  if (run.signal) {
+    cell.verdict = Verdict::Crash;
+    cell.reason = strsignal(run.signal);
+    cell.said = "died of signal " + std::to_string(run.signal);
+    return true;
+  }
+  if (!run.finished) {
+    cell.verdict = Verdict::Crash;
+    cell.reason = "no answer";
+    return true;
+  }
+  if (a.kind == AnswerKind::Exception) {
+    cell.verdict = Verdict::Crash;
+    cell.reason = "throws";
+    cell.said = std::string("exception: ") + a.message;
+    return true;
+  }
+  if (a.kind == AnswerKind::Cap) {
+    cell.verdict = Verdict::Cap;
+    cell.said = std::string("status ") + a.status;
+    return true;
+  }
+  if (a.kind == AnswerKind::NumericalFailure) {
+    cell.verdict = Verdict::NaN;
+    cell.said = std::string("status ") + a.status;
+    return true;
+  }
+  return false;
+}
+
+/// Judges a time-of-impact answer against the query it ran on (the case's 3D query or its
+/// 2D form); see the file comment.
+inline Cell judgeToi(const ToiCase& c, const ToiQuery& q, const GuardedRun& run, const ToiAnswer& a, bool detectionOnly) {
+  Cell cell;
+  if (judgeRun(run, a, cell)) return cell;
+  cell.said = std::string(a.hit ? "hit" : "no hit") + (a.hit && !detectionOnly ? " at t = " + sci(a.time, 6) : "") +
+              (a.status[0] ? std::string(" (") + a.status + ")" : "");
+  if (a.hit && !detectionOnly && !std::isfinite(a.time)) {
+    cell.verdict = Verdict::NaN;
+    return cell;
+  }
+  if (!a.hit) {
+    const bool right = c.expect != Expect::Hit;
+    cell.verdict = right ? Verdict::Right : Verdict::Wrong;
+    if (!right) cell.reason = "miss";
+    return cell;
+  }
+  if (c.expect == Expect::NoHit) {
+    cell.verdict = Verdict::Wrong;
+    cell.reason = "false alarm";
+    return cell;
+  }
+  if (detectionOnly) {
+    cell.verdict = Verdict::Right;
+    return cell;
+  }
+  if (a.time < 0 || a.time > 1) {
+    cell.verdict = Verdict::Wrong;
+    cell.reason = "t outside [0, 1]";
+    return cell;
+  }
+  toistudy::ref::DistanceFunction d(q);
+  const double dAt = double(d(LD(a.time)));
+  const double late = a.time - q.tRef;
+  cell.said += ", d_ref(t) = " + sci(dAt, 2) + ", t - t_ref = " + sci(late, 2);
+  if (late > c.delta / c.lipschitz) {
+    cell.verdict = Verdict::Wrong;
+    cell.reason = "late " + sci(late, 0);
+  } else if (dAt > c.delta) {
+    cell.verdict = Verdict::Wrong;
+    cell.reason = "early, d=" + sci(dAt, 0);
+  } else {
+    cell.verdict = Verdict::Right;
+  }
+  return cell;
+}
+
+/// Judges a static answer; see the file comment.
+inline Cell judgeGjk(const StaticCase& c, const GuardedRun& run, const GjkAnswer& a) {
+  Cell cell;
+  if (judgeRun(run, a, cell)) return cell;
+  if (a.boolean) {
+    cell.said = a.overlap ? "intersecting" : "disjoint";
+    const bool right = c.reference == 0 ? a.overlap : (c.reference > c.tau ? !a.overlap : true);
+    cell.verdict = right ? Verdict::Right : Verdict::Wrong;
+    if (!right) cell.reason = a.overlap ? "says intersecting" : "says disjoint";
+    return cell;
+  }
+  cell.said = "distance " + sci(a.distance, 3) + (a.status[0] ? std::string(" (") + a.status + ")" : "");
+  if (!std::isfinite(a.distance)) {
+    cell.verdict = Verdict::NaN;
+    return cell;
+  }
+  const double error = std::abs(std::max(a.distance, 0.0) - c.reference);
+  if (error <= c.tau) {
+    cell.verdict = Verdict::Right;
+  } else {
+    cell.verdict = Verdict::Wrong;
+    cell.reason = "error " + sci(error, 0);
+  }
+  return cell;
+}
+
+// ---------------------------------------------------------------------------------------
+// The methods of ours
+
+/// The collision tolerance of the methods of ours in the table (float and double alike,
+/// so the two columns answer the same question).
+constexpr double kTolerance = 1e-5;
+/// The watchdog's limit per cell (seconds).
+constexpr double kWatchdog = 5;
+
+template <typename S>
+using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
+
+/// Our shape for a case's shape, in scalar S.
+template <typename S>
+AnyShape<S> ourShape(const ShapeSpec& s) {
+  auto points = [&] {
+    std::vector<Vector3<S>> out;
+    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
+    return out;
+  };
+  switch (s.kind) {
+    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
+    case ShapeKind::Sphere:
+    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
+    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
+    case ShapeKind::Polytope: return Polytope<S>::hull(points());
+    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
+  }
+  throw std::logic_error("extreme cases: unknown shape");
+}
+
+/// Calls `method(P, Q, L)` on the query's two moving bodies, in scalar S.
+template <typename S, typename F>
+ToiAnswer withMoving(const ToiQuery& q, F&& method) {
+  const AnyShape<S> P = ourShape<S>(q.P), Q = ourShape<S>(q.Q);
+  const Motion<S> mp = toistudy::toMotion<S>(q.motionP), mq = toistudy::toMotion<S>(q.motionQ);
+  auto bound = [](const MotionSpec& m, const ShapeSpec& s) { return m.v.norm() + m.a.norm() + m.w.norm() * s.boundingRadius(); };
+  const S L = S((bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * 1.000001);
+  return std::visit([&](const auto& a, const auto& b) { return method(moving(a, mp), moving(b, mq), L); }, P, Q);
+}
+
+template <typename S>
+void statusOf(ToiAnswer& out, IntersectionStatus status) {
+  setText(out.status, sizeof out.status, toString(status));
+  if (status == IntersectionStatus::IterationCap) out.kind = AnswerKind::Cap;
+  if (status == IntersectionStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+}
+
+/// Static sampling at N times (toi_comparisons.hpp's StaticSampling), keeping the status.
+template <typename S>
+ToiAnswer staticSampling(const ToiQuery& q, int samples) {
+  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
+    ToiAnswer out;
+    for (int k = 0; k < samples; ++k) {
+      const S t = S(k) / S(samples - 1);
+      const auto r = intersect(P.at(t), Q.at(t));
+      if (r.status == IntersectionStatus::Disjoint) continue;
+      statusOf<S>(out, r.status);
+      out.hit = true;
+      out.time = double(t);
+      return out;
+    }
+    return out;
+  });
+}
+
+/// The sweeping test (toi_comparisons.hpp's Swept): yes/no.
+template <typename S>
+ToiAnswer swept(const ToiQuery& q) {
+  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
+    ToiAnswer out;
+    const auto r = sweepingTest(P, Q, S(0), S(1));
+    statusOf<S>(out, r.status);
+    out.hit = r.status != IntersectionStatus::Disjoint;
+    out.time = 0;
+    return out;
+  });
+}
+
+/// Conservative advancement (toi_comparisons.hpp's ConservativeAdvancement), keeping its cap.
+template <typename S>
+ToiAnswer conservativeAdvancement(const ToiQuery& q, double tolerance) {
+  return withMoving<S>(q, [&](const auto& P, const auto& Q, S L) {
+    ToiAnswer out;
+    const S tol = S(tolerance);
+    S t = 0;
+    for (int step = 0; step < 10000; ++step) {
+      const GjkResult<S> r = gjk(P.at(t), Q.at(t));
+      if (r.status == GjkStatus::NumericalFailure) {
+        out.kind = AnswerKind::NumericalFailure;
+        setText(out.status, sizeof out.status, "gjk numerical-failure");
+        return out;
+      }
+      if (r.status == GjkStatus::Overlapping || r.distance < tol) {
+        out.hit = true;
+        out.time = double(t);
+        return out;
+      }
+      t += std::max(r.lowerBound, S(0)) / L;  // proven: the bodies are at least lowerBound apart
+      if (t > S(1)) return out;
+    }
+    out.kind = AnswerKind::Cap;
+    setText(out.status, sizeof out.status, "10000 steps");
+    out.hit = true;
+    out.time = double(t);
+    return out;
+  });
+}
+
+/// The paper's solver (gjkx::timeOfImpact), as toi_comparisons.hpp's Ours, keeping the status.
+template <typename S>
+ToiAnswer ours(const ToiQuery& q, double tolerance, ExtrusionVariant variant) {
+  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
+    ToiSettings<S> settings;
+    settings.collisionTolerance = S(tolerance);
+    settings.timeTolerance = std::min(settings.timeTolerance, S(tolerance));
+    settings.variant = variant;
+    const ToiResult<S> r = timeOfImpact(P, Q, S(0), S(1), settings);
+    ToiAnswer out;
+    setText(out.status, sizeof out.status, toString(r.status));
+    if (r.status == ToiStatus::IterationCap) out.kind = AnswerKind::Cap;
+    if (r.status == ToiStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+    out.hit = reportsCollision(r.status);
+    out.time = double(r.time);
+    return out;
+  });
+}
+
+/// GJK's distance (gjkx::gjk, default settings) at the case's poses, in scalar S.
+template <typename S>
+GjkAnswer oursGjk(const StaticCase& c) {
+  const AnyShape<S> P = ourShape<S>(c.P), Q = ourShape<S>(c.Q);
+  const Pose<S> pp = c.poseP.template cast<S>(), pq = c.poseQ.template cast<S>();
+  return std::visit(
+      [&](const auto& a, const auto& b) {
+        const GjkResult<S> r = gjk(place(a, pp), place(b, pq));
+        GjkAnswer out;
+        setText(out.status, sizeof out.status, toString(r.status));
+        if (r.status == GjkStatus::IterationCap) out.kind = AnswerKind::Cap;
+        if (r.status == GjkStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+        out.distance = double(r.distance);
+        return out;
+      },
+      P, Q);
+}
+
+/// A time-of-impact method of the table.
+struct ToiMethod {
+  std::string name;           ///< column header
+  bool library = false;       ///< a solver of the library (the test asserts these)
+  bool planarOnly = false;    ///< runs on the 2D form only (Box2D)
+  bool detectionOnly = false;  ///< yes/no, no time
+  std::function<ToiAnswer(const ToiQuery&)> run;
+};
+
+/// A static method of the table.
+struct GjkMethod {
+  std::string name;
+  bool library = false;
+  std::function<GjkAnswer(const StaticCase&)> run;
+};
+
+/// The time-of-impact methods of ours: static sampling, swept, CA, the paper's solver and
+/// the certified one (tolerance kTolerance).
+inline std::vector<ToiMethod> ourToiMethods() {
+  const double tol = kTolerance;
+  std::vector<ToiMethod> m;
+  m.push_back({"static N=32", false, false, false, [](const ToiQuery& q) { return staticSampling<double>(q, 32); }});
+  m.push_back({"swept", false, false, true, [](const ToiQuery& q) { return swept<double>(q); }});
+  m.push_back({"CA", false, false, false, [tol](const ToiQuery& q) { return conservativeAdvancement<double>(q, tol); }});
+  m.push_back({"ours double", true, false, false, [tol](const ToiQuery& q) { return ours<double>(q, tol, ExtrusionVariant::Paper); }});
+  m.push_back({"ours float", true, false, false, [tol](const ToiQuery& q) { return ours<float>(q, tol, ExtrusionVariant::Paper); }});
+  m.push_back({"certified double", true, false, false,
+               [tol](const ToiQuery& q) { return ours<double>(q, tol, ExtrusionVariant::Certified); }});
+  m.push_back({"certified float", true, false, false,
+               [tol](const ToiQuery& q) { return ours<float>(q, tol, ExtrusionVariant::Certified); }});
+  return m;
+}
+
+/// The static methods of ours: GJK's distance in double and float.
+inline std::vector<GjkMethod> ourGjkMethods() {
+  return {{"ours double", true, [](const StaticCase& c) { return oursGjk<double>(c); }},
+          {"ours float", true, [](const StaticCase& c) { return oursGjk<float>(c); }}};
+}
+
+/// Runs one time-of-impact method on one case, guarded, and judges it.
+inline Cell runToiCell(const ToiCase& c, const ToiMethod& m, double limit = kWatchdog) {
+  if (m.planarOnly && !c.hasPlanarForm) return Cell{Verdict::NotApplicable, "", "no 2D form", 0};
+  const ToiQuery& q = m.planarOnly ? c.planar : c.query;
+  ToiAnswer a;
+  const GuardedRun run = guarded([&] { return m.run(q); }, limit, a);
+  return judgeToi(c, q, run, a, m.detectionOnly);
+}
+
+/// Runs one static method on one case, guarded, and judges it.
+inline Cell runGjkCell(const StaticCase& c, const GjkMethod& m, double limit = kWatchdog) {
+  GjkAnswer a;
+  const GuardedRun run = guarded([&] { return m.run(c); }, limit, a);
+  return judgeGjk(c, run, a);
+}
+
+/// Disagreements between a case's references (the brute force, its 2D form, the closed
+/// form, and the expectation), one line each; empty when they agree.
+inline std::vector<std::string> referenceProblems(const std::vector<ToiCase>& cases, const std::vector<StaticCase>& statics) {
+  std::vector<std::string> out;
+  for (const ToiCase& c : cases) {
+    const bool hit = c.query.refHit;
+    if ((c.expect == Expect::NoHit) == hit) out.push_back(c.name + ": the reference says " + (hit ? "hit" : "no hit"));
+    if (!std::isnan(c.closedForm) && std::abs(c.closedForm - c.query.tRef) > 1e-9)
+      out.push_back(c.name + ": closed form t = " + sci(c.closedForm, 12) + ", brute force t = " + sci(c.query.tRef, 12));
+    if (c.hasPlanarForm && (c.planar.refHit != hit || std::abs(c.planar.tRef - c.query.tRef) > 1e-9))
+      out.push_back(c.name + ": the 2D form's reference t = " + sci(c.planar.tRef, 12) + " differs");
+  }
+  for (const StaticCase& c : statics)
+    if (std::abs(c.closedForm - c.reference) > 1e-9 * c.scale)
+      out.push_back(c.name + " (static): closed form " + sci(c.closedForm, 12) + ", brute force " + sci(c.reference, 12));
+  return out;
+}
+
+}  // namespace gjkx::extreme
