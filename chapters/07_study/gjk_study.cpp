@@ -14,8 +14,8 @@
 //   distance queries the point is the median error |d - d_ref| and its bar reaches the
 //   maximum; for boolean queries the point is the rate of wrong answers. An error of 0
 //   cannot sit on a log axis: it is drawn at a floor, which the figure states.
-// A full run takes about a minute on an idle 2-core machine (most of it the references of
-// the 1000-vertex polytopes), --quick a few seconds. Regenerate the kept figures with
+// A full run takes about 25 s of processor time (51 s of wall time on the shared 2-core
+// machine at half a core), --quick a few seconds. Regenerate the kept figures with
 // `build/chapters/07_study/gjk_study --out figures/study`.
 //
 // What each column means, and how the shapes, poses and references are made:
