@@ -486,17 +486,16 @@ TEMPLATE_TEST_CASE("hard: a warm start from an overlap still reports Overlapping
   }
 }
 
-TEST_CASE("hard: a long segment piercing a tiny box is not reported separated (open fuzz finding)",
-          "[gjk][hard][fuzz][!shouldfail]") {
-  // OPEN BUG, found by tests/fuzz/fuzz_time_of_impact (marked [!shouldfail]: remove the tag
-  // when it is fixed). The segment from (-1000, -1000, -1000) to (999.97, 999.97, 999.97)
-  // passes through a box 2e-4 wide near the origin (by 7.9e-6, the brute-force signed
-  // distance). V_Q - V_P then holds a sliver triangle 3464 long and 2e-4 wide whose
-  // computed closest point is off by ~1e-5; GJK stops there ("w already in the simplex")
-  // and reports Separated at 6.2e-6 although its best supporting distance is negative.
-  // Reporting Overlapping whenever such a stop has no positive lower bound fixes this
-  // case but turns float near-contacts of curved shapes at ~3e-4 into overlaps
-  // (tests/brent/test_time_of_impact.cpp fails), so the fix needs more than that.
+TEST_CASE("hard: a long segment piercing a tiny box is not reported separated (fuzz finding)", "[gjk][hard][fuzz]") {
+  // Found by tests/fuzz/fuzz_time_of_impact. The segment from (-1000, -1000, -1000) to
+  // (999.97, 999.97, 999.97) passes through a box 2e-4 wide near the origin (by 7.9e-6, the
+  // brute-force signed distance). V_Q - V_P then holds sliver triangles 3464 long and 2e-4
+  // wide. Their z, rebuilt as sum lambda_k w_k, had the right length but a direction off
+  // by 3% (the lambda's round-off times |w| = 1732), so SD along it was -72 and GJK stalled
+  // ("no decrease") at "Separated at 6.2e-6". Computing z as the projection itself, from
+  // edges taken from the support points and the normal from the edges at the largest
+  // angle (simplex.hpp, detail::triangle), keeps the direction good to ~1e-13 and GJK
+  // finds the overlap.
   using V = Vector3<double>;
   const V lo(-0.0001908294677734375, -2.050781249999991e-06, -0.0001643585205078125);
   const V hi(9.1644287109375003e-06, 0.00019794311523437501, 3.5635375976562499e-05);

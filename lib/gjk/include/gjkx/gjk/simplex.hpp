@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 namespace gjkx {
@@ -45,23 +46,25 @@ struct SimplexVertex {
   int hintQ = 0;
 };
 
-/// The simplex \f$V_Z\f$ (1 to 4 vertices) and the barycentric coordinates of its
-/// point closest to the origin, \f$z = \sum_k \lambda_k w_k\f$.
+/// The simplex \f$V_Z\f$ (1 to 4 vertices), its point z closest to the origin and the
+/// barycentric coordinates of z, \f$z = \sum_k \lambda_k w_k\f$.
 template <typename S>
 struct Simplex {
   /// The vertices; only the first `size` are used.
   std::array<SimplexVertex<S>, 4> vertices;
   /// Barycentric coordinates of z (positive, summing to 1) for the first `size` vertices.
   std::array<S, 4> lambda{};
+  /// z, the point of the simplex closest to the origin, as `reduceToClosestFeature` found it.
+  Vector3<S> z = Vector3<S>::Zero();
   /// Number of vertices in use (0 to 4).
   int size = 0;
 
-  /// z, the point of the simplex closest to the origin.
-  Vector3<S> closestPoint() const {
-    Vector3<S> z = Vector3<S>::Zero();
-    for (int k = 0; k < size; ++k) z += lambda[k] * vertices[k].w;
-    return z;
-  }
+  /// z, the point of the simplex closest to the origin (set by `reduceToClosestFeature`).
+  /// It is computed directly as the projection of the origin onto the closest feature,
+  /// not as \f$\sum_k \lambda_k w_k\f$: on a sliver feature far from the origin that sum
+  /// cancels to a point whose *direction* is off by far more than its length (see
+  /// `detail::triangle`), and GJK's next direction is this z.
+  const Vector3<S>& closestPoint() const { return z; }
   /// The witness point on P, \f$\sum_k \lambda_k p_k\f$.
   Vector3<S> witnessP() const {
     Vector3<S> x = Vector3<S>::Zero();
@@ -77,25 +80,31 @@ struct Simplex {
   /// Appends a vertex (the caller makes sure there is room).
   void push(const SimplexVertex<S>& v) { vertices[size++] = v; }
   /// Becomes a copy of `other` in everything that is used: its first `other.size`
-  /// vertices and coordinates. (Speed: GJK saves and restores its simplex every
+  /// vertices and coordinates, and z. (Speed: GJK saves and restores its simplex every
   /// iteration; a plain copy would also move the unused slots, four vertices in all.)
   void assignUsed(const Simplex& other) {
     for (int k = 0; k < other.size; ++k) {
       vertices[k] = other.vertices[k];
       lambda[k] = other.lambda[k];
     }
+    z = other.z;
     size = other.size;
   }
 };
 
 namespace detail {
 
+/// The vertices the sub-algorithm works on.
+template <typename S>
+using Vertices = std::array<SimplexVertex<S>, 4>;
+
 /// The closest feature found by a signed-volume test: which input vertices it keeps
-/// (bit k set for vertex k) and their barycentric coordinates.
+/// (bit k set for vertex k), their barycentric coordinates, and the closest point z.
 template <typename S>
 struct Feature {
   unsigned keep = 0;
   std::array<S, 4> lambda{};
+  Vector3<S> z = Vector3<S>::Zero();
   S distanceSquared = std::numeric_limits<S>::infinity();
 };
 
@@ -106,158 +115,218 @@ bool sameSign(S a, S b) {
   return (a > S(0) && b > S(0)) || (a < S(0) && b < S(0));
 }
 
-/// When may the signs be trusted? A volume within round-off of zero has signs that are
-/// noise. Rounding
-/// leaves a nearly collinear triangle or a nearly flat tetrahedron with a tiny volume
-/// of either sign; the sub-volumes may then all "agree" by chance, and the interior
-/// answer is a point of the simplex far from the closest one (needle tetrahedra 0.01
-/// from the origin were reported as containing it). Each signed volume is good to
-/// about \f$\epsilon\f$ times a product of lengths (triangle: its longest edge times its
-/// farthest vertex from the origin; tetrahedron: the farthest vertex cubed), so the
-/// barycentric coordinates are good to \f$\epsilon / r\f$, r the volume relative to that
-/// product. Below \f$r = \epsilon^{1/4}\f$ (where they would be good only to
-/// \f$\epsilon^{3/4}\f$, GJK's own tolerance) the signs are not trusted: every facet is
-/// searched, and the interior answer, if any, is kept only when it is nearer. Every
-/// candidate is a point of the simplex, so the nearest of them is never worse than any.
+/// When may a sign be trusted? Each signed volume below is computed with a known
+/// round-off: about \f$\epsilon\f$ times the lengths it multiplies. A value within a few
+/// times that bound of zero has a sign that is noise: rounding can make a nearly
+/// collinear triangle or a nearly flat tetrahedron "contain" the origin by chance, and
+/// the interior answer is then a point of the simplex far from the closest one (needle
+/// tetrahedra 0.01 from the origin were reported as containing it). A feature whose sign
+/// is not trusted is searched as if it disagreed, and the interior answer, if any, is
+/// kept only when it is nearer: every candidate is a point of the simplex, so the
+/// nearest of them is never worse than any. This is the safety factor on the bound.
 template <typename S>
-S trustedVolumeRatio() {
-  return std::pow(std::numeric_limits<S>::epsilon(), S(0.25));
+constexpr S signSafety() {
+  return S(64) * std::numeric_limits<S>::epsilon();
+}
+
+/// The edge \f$w_b - w_a\f$, computed from the support points as \f$(q_b - q_a) - (p_b - p_a)\f$.
+/// Each \f$w = q - p\f$ is rounded by \f$\epsilon\lVert w\rVert\f$; when P is large and far
+/// (a long rod) and two vertices share their p, \f$w_b - w_a\f$ would carry that rounding
+/// into an edge much shorter than \f$\lVert w\rVert\f$, while \f$q_b - q_a\f$ is exact.
+template <typename S>
+Vector3<S> edge(const Vertices<S>& v, int a, int b) {
+  return (v[b].q - v[a].q) - (v[b].p - v[a].p);
 }
 
 template <typename S>
-Feature<S> vertexFeature(const std::array<Vector3<S>, 4>& w, int a) {
+Feature<S> vertexFeature(const Vertices<S>& v, int a) {
   Feature<S> f;
   f.keep = 1u << a;
   f.lambda[a] = S(1);
-  f.distanceSquared = w[a].squaredNorm();
+  f.z = v[a].w;
+  f.distanceSquared = f.z.squaredNorm();
   return f;
 }
 
+/// Segment [A, B] (Montanari's S1D). The origin projects onto the line at
+/// \f$p_0 = w_o - t\,(w_o\cdot t)/(t\cdot t)\f$, t = B - A, from the end o nearer the origin
+/// (its rounding is the smaller). Measured along the axis I where t is longest,
+/// \f$\lambda_A = (B_I - p0_I)/t_I\f$ and \f$\lambda_B = (p0_I - A_I)/t_I\f$. Both agree in sign
+/// with \f$t_I\f$ exactly when p0 lies inside the segment; otherwise the closest point is an end.
 template <typename S>
-S distanceSquaredOf(const std::array<Vector3<S>, 4>& w, const Feature<S>& f) {
-  Vector3<S> z = Vector3<S>::Zero();
-  for (int k = 0; k < 4; ++k)
-    if (f.keep & (1u << k)) z += f.lambda[k] * w[k];
-  return z.squaredNorm();
-}
-
-/// Segment [A, B] (Montanari's S1D). The origin projects onto the line at p0; measured
-/// along the axis I where B - A is longest, \f$\lambda_A = (B_I - p0_I)/(B_I - A_I)\f$
-/// and \f$\lambda_B = (p0_I - A_I)/(B_I - A_I)\f$. Both agree in sign with \f$B_I - A_I\f$
-/// exactly when p0 lies inside the segment; otherwise the closest point is an end.
-template <typename S>
-Feature<S> segment(const std::array<Vector3<S>, 4>& w, int a, int b) {
-  const Vector3<S> t = w[b] - w[a];
+Feature<S> segment(const Vertices<S>& v, int a, int b) {
+  const Vector3<S> t = edge(v, a, b);
   const S tt = t.squaredNorm();
-  if (!(tt > S(0))) return vertexFeature(w, a);  // coincident ends: a point
-  const Vector3<S> p0 = w[a] - t * (w[a].dot(t) / tt);
+  if (!(tt > S(0))) return vertexFeature(v, a);  // coincident ends: a point
+  const Vector3<S>& wo = v[a].w.squaredNorm() <= v[b].w.squaredNorm() ? v[a].w : v[b].w;
+  const Vector3<S> p0 = wo - t * (wo.dot(t) / tt);
   int I = 0;
   t.cwiseAbs().maxCoeff(&I);
-  const S muMax = w[b][I] - w[a][I];
-  const S cA = w[b][I] - p0[I];
-  const S cB = p0[I] - w[a][I];
+  const S muMax = t[I];
+  const S cA = v[b].w[I] - p0[I];
+  const S cB = p0[I] - v[a].w[I];
   if (sameSign(muMax, cA) && sameSign(muMax, cB)) {
     Feature<S> f;
     f.keep = (1u << a) | (1u << b);
-    f.lambda[a] = cA / muMax;
-    f.lambda[b] = cB / muMax;
-    f.distanceSquared = distanceSquaredOf(w, f);
+    f.lambda[a] = cA / (cA + cB);
+    f.lambda[b] = cB / (cA + cB);
+    f.z = p0;
+    f.distanceSquared = p0.squaredNorm();
     return f;
   }
   // p0 is beyond one end: if it is before A (cB disagrees) the closest point is A.
-  return sameSign(muMax, cB) ? vertexFeature(w, b) : vertexFeature(w, a);
+  return sameSign(muMax, cB) ? vertexFeature(v, b) : vertexFeature(v, a);
 }
 
-/// Twice the signed area of the 2D triangle (p, q, r) in the coordinates (x, y).
+/// Twice the signed area of the 2D parallelogram (u, v) in the coordinates (x, y).
 template <typename S>
-S area2(const Vector3<S>& p, const Vector3<S>& q, const Vector3<S>& r, int x, int y) {
-  return (q[x] - p[x]) * (r[y] - p[y]) - (q[y] - p[y]) * (r[x] - p[x]);
+S cross2(const Vector3<S>& u, const Vector3<S>& v, int x, int y) {
+  return u[x] * v[y] - u[y] * v[x];
+}
+
+/// The normal \f$(B - A) \times (C - A)\f$ of a triangle, and the squared product of the
+/// two edge lengths it was computed from (the scale of its round-off, squared).
+template <typename S>
+struct TriangleNormal {
+  Vector3<S> n;
+  S scale2;
+};
+
+/// The normal of triangle ABC from the two edges at its largest angle (opposite its
+/// longest edge): on a needle every other pair is nearly parallel and their cross
+/// product is mostly round-off. All three choices are \f$(B - A) \times (C - A)\f$ exactly.
+template <typename S>
+TriangleNormal<S> normalOf(const Vertices<S>& v, int a, int b, int c) {
+  const Vector3<S> eab = edge(v, a, b), eac = edge(v, a, c), ebc = edge(v, b, c);
+  const S lab = eab.squaredNorm(), lac = eac.squaredNorm(), lbc = ebc.squaredNorm();
+  if (lbc >= lab && lbc >= lac) return {eab.cross(eac), lab * lac};
+  if (lac >= lab) return {eab.cross(ebc), lab * lbc};
+  return {eac.cross(ebc), lac * lbc};
+}
+
+/// The vertex of the list nearest the origin (its w has the smallest rounding).
+template <typename S>
+int nearestOf(const Vertices<S>& v, std::initializer_list<int> ids) {
+  int best = *ids.begin();
+  for (int k : ids)
+    if (v[k].w.squaredNorm() < v[best].w.squaredNorm()) best = k;
+  return best;
 }
 
 /// Triangle ABC (Montanari's S2D). Project the origin onto the plane at p0, then drop
 /// the coordinate I where the normal n is largest: the triangle's projected area is
 /// \f$n_I\f$, and the area with vertex k replaced by p0 is \f$C_k\f$, so \f$\lambda_k = C_k / n_I\f$.
-/// Where \f$C_k\f$ disagrees with \f$n_I\f$, search the edge opposite k.
+/// Where \f$C_k\f$ disagrees with \f$n_I\f$ (or its sign is not trusted, `signSafety`),
+/// search the edge opposite k.
+///
+/// Accuracy on slivers. GJK's next direction is z, and the supporting distance along it
+/// is measured across the whole of \f$V_Q - V_P\f$: a direction error \f$\delta\f$ costs up to
+/// \f$\delta\,\mathrm{diam}(V_Q - V_P)\f$ there, and GJK stalls when that exceeds the gap
+/// it is closing. A rod 3464 long through a box 2e-4 wide makes triangles of exactly
+/// that kind; three choices keep their z accurate:
+/// - the edges come from the support points (`edge`), not from the rounded w;
+/// - n comes from the two edges at the largest angle (`normalOf`);
+/// - z is the projection p0 itself, from the vertex nearest the origin. Rebuilt as
+///   \f$\sum_k \lambda_k w_k\f$ it would carry the \f$\lambda_k\f$'s round-off times
+///   \f$\lVert w_k\rVert\f$, 1732 on that rod against a distance of 6e-6: its length
+///   stayed right, its direction was off by 3%.
+/// Each \f$C_k\f$ is the opposite edge crossed with p0 minus that edge's start, so it too
+/// multiplies one accurate edge by one rounded vector.
 template <typename S>
-Feature<S> triangle(const std::array<Vector3<S>, 4>& w, int a, int b, int c) {
-  const Vector3<S> n = (w[b] - w[a]).cross(w[c] - w[a]);
+Feature<S> triangle(const Vertices<S>& v, int a, int b, int c) {
+  const TriangleNormal<S> tn = normalOf(v, a, b, c);
+  const Vector3<S>& n = tn.n;
   const S nn = n.squaredNorm();
-  // Is the area |n| well above its round-off, about epsilon * (longest edge) *
-  // (farthest vertex from the origin)? If not, its signs are noise (trustedVolumeRatio).
-  const S edge2 = std::max({(w[b] - w[a]).squaredNorm(), (w[c] - w[a]).squaredNorm(), (w[c] - w[b]).squaredNorm()});
-  const S far2 = std::max({w[a].squaredNorm(), w[b].squaredNorm(), w[c].squaredNorm()});
-  const S ratio = trustedVolumeRatio<S>();
-  const bool noisy = !(nn > ratio * ratio * edge2 * far2);
   Feature<S> best;
   std::array<S, 3> C{S(0), S(0), S(0)};
+  std::array<bool, 3> trusted{false, false, false};
   S muMax = S(0);
-  if (nn > S(0)) {
-    const Vector3<S> p0 = n * (w[a].dot(n) / nn);
-    int I = 0;
-    n.cwiseAbs().maxCoeff(&I);
+  int I = 0;
+  n.cwiseAbs().maxCoeff(&I);
+  constexpr S safety2 = signSafety<S>() * signSafety<S>();
+  if (n[I] * n[I] > safety2 * tn.scale2) {  // else degenerate: search every edge
+    const Vector3<S>& wo = v[nearestOf(v, {a, b, c})].w;
+    const Vector3<S> p0 = n * (wo.dot(n) / nn);
     const int x = (I + 1) % 3, y = (I + 2) % 3;  // cyclic, so the projected area is +n_I
     muMax = n[I];
-    C[0] = area2(p0, w[b], w[c], x, y);
-    C[1] = area2(w[a], p0, w[c], x, y);
-    C[2] = area2(w[a], w[b], p0, x, y);
+    const std::array<int, 3> ids{a, b, c};
+    for (int k = 0; k < 3; ++k) {
+      const int from = ids[(k + 1) % 3], to = ids[(k + 2) % 3];
+      const Vector3<S> e = edge(v, from, to), d = p0 - v[from].w;
+      C[k] = cross2(e, d, x, y);  // area (from, to, p0): vertex k replaced by p0
+      // |C_k| above its round-off, eps |e| (|p0| + |w_from|) (compared squared, with
+      // (a + b)^2 <= 2 (a^2 + b^2), to save the square roots).
+      trusted[k] = C[k] * C[k] > safety2 * e.squaredNorm() * S(2) * (p0.squaredNorm() + v[from].w.squaredNorm());
+    }
     if (sameSign(muMax, C[0]) && sameSign(muMax, C[1]) && sameSign(muMax, C[2])) {
       Feature<S> f;
       f.keep = (1u << a) | (1u << b) | (1u << c);
       // Divide by the sum of the C_k (equal to n_I in exact arithmetic), so the lambda
-      // sum to 1 even when round-off has spoilt the C_k: z stays in the triangle.
+      // sum to 1 even when round-off has spoilt the C_k: the witnesses stay in the triangle.
       const S sumC = C[0] + C[1] + C[2];
       f.lambda[a] = C[0] / sumC;
       f.lambda[b] = C[1] / sumC;
       f.lambda[c] = C[2] / sumC;
-      f.distanceSquared = distanceSquaredOf(w, f);
-      if (!noisy) return f;
-      best = f;  // a noisy interior answer is only a candidate: an edge may be nearer
+      f.z = p0;
+      f.distanceSquared = p0.squaredNorm();
+      if (trusted[0] && trusted[1] && trusted[2]) return f;
+      best = f;  // an untrusted interior answer is only a candidate: an edge may be nearer
     }
   }
   // The closest point is on an edge: search the edges opposite the disagreeing vertices
-  // (all three for a degenerate triangle, where muMax = 0, or a noisy one).
+  // and those whose sign is not trusted (all three for a degenerate triangle).
   const std::array<int, 3> ids{a, b, c};
   for (int k = 0; k < 3; ++k) {
-    if (!noisy && sameSign(muMax, C[k])) continue;
-    const Feature<S> f = segment(w, ids[(k + 1) % 3], ids[(k + 2) % 3]);
+    if (trusted[k] && sameSign(muMax, C[k])) continue;
+    const Feature<S> f = segment(v, ids[(k + 1) % 3], ids[(k + 2) % 3]);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }
   return best;
 }
 
-/// Signed volume (times 6) of the tetrahedron (p, q, r, u).
+/// Tetrahedron ABCD (Montanari's S3D). The barycentric coordinate of the origin for
+/// vertex k is its height over the opposite face divided by vertex k's height over it:
+/// \f$\lambda_k = n_k\cdot(0 - w_o) / n_k\cdot(w_k - w_o)\f$, \f$n_k\f$ that face's normal and
+/// \f$w_o\f$ its vertex nearest the origin (the ratio of signed volumes of Montanari et al.,
+/// each computed from its own face, so that a sliver tetrahedron keeps the accuracy the
+/// triangle test has). All positive: the origin is inside (distance 0). Otherwise search
+/// the faces whose coordinate is negative or not trusted.
 template <typename S>
-S volume6(const Vector3<S>& p, const Vector3<S>& q, const Vector3<S>& r, const Vector3<S>& u) {
-  return (q - p).dot((r - p).cross(u - p));
-}
-
-/// Tetrahedron ABCD (Montanari's S3D). \f$C_k\f$ is the signed volume with vertex k
-/// replaced by the origin; their sum is the whole volume. All agree in sign: the origin
-/// is inside (distance 0). Otherwise search the faces opposite the disagreeing vertices.
-template <typename S>
-Feature<S> tetrahedron(const std::array<Vector3<S>, 4>& w) {
-  const Vector3<S> o = Vector3<S>::Zero();
-  const std::array<S, 4> C{volume6(o, w[1], w[2], w[3]), volume6(w[0], o, w[2], w[3]),
-                           volume6(w[0], w[1], o, w[3]), volume6(w[0], w[1], w[2], o)};
-  const S detM = C[0] + C[1] + C[2] + C[3];
-  // The C_k are triple products of the w_k, good to about epsilon * (farthest vertex)^3;
-  // a volume not well above that is noise (trustedVolumeRatio).
-  S far2 = S(0);
-  for (int k = 0; k < 4; ++k) far2 = std::max(far2, w[k].squaredNorm());
-  const bool noisy = !(std::abs(detM) > trustedVolumeRatio<S>() * far2 * std::sqrt(far2));
+Feature<S> tetrahedron(const Vertices<S>& v) {
+  constexpr S safety2 = signSafety<S>() * signSafety<S>();
+  std::array<S, 4> C{}, D{};
+  std::array<bool, 4> trusted{};
+  bool flat = false;  // a vertex within round-off of its opposite face: no sign is trusted
+  for (int k = 0; k < 4; ++k) {
+    const int f0 = (k + 1) % 4, f1 = (k + 2) % 4, f2 = (k + 3) % 4;
+    const TriangleNormal<S> tn = normalOf(v, f0, f1, f2);
+    const int o = nearestOf(v, {f0, f1, f2});
+    const Vector3<S> h = edge(v, o, k);
+    C[k] = -tn.n.dot(v[o].w);  // the origin's height over face k, times |n_k|
+    D[k] = tn.n.dot(h);        // vertex k's height over face k, times |n_k|
+    // Each above its round-off, eps |n_k| times the other factor's length (compared squared).
+    trusted[k] = C[k] * C[k] > safety2 * tn.scale2 * v[o].w.squaredNorm();
+    if (!(D[k] * D[k] > safety2 * tn.scale2 * h.squaredNorm())) flat = true;
+  }
   Feature<S> best;
-  if (sameSign(detM, C[0]) && sameSign(detM, C[1]) && sameSign(detM, C[2]) && sameSign(detM, C[3])) {
+  bool inside = !flat;
+  for (int k = 0; k < 4; ++k) inside = inside && sameSign(C[k], D[k]);
+  if (inside) {
     Feature<S> f;
     f.keep = 0xFu;
-    for (int k = 0; k < 4; ++k) f.lambda[k] = C[k] / detM;
-    f.distanceSquared = S(0);
-    if (!noisy) return f;
-    f.distanceSquared = distanceSquaredOf(w, f);  // a noisy "inside" is only a candidate
+    S sum = S(0);
+    for (int k = 0; k < 4; ++k) sum += f.lambda[k] = C[k] / D[k];
+    for (int k = 0; k < 4; ++k) f.lambda[k] /= sum;
+    f.distanceSquared = S(0);  // the origin is inside: z = 0
+    if (trusted[0] && trusted[1] && trusted[2] && trusted[3]) return f;
+    // An untrusted "inside" is only a candidate, at the point its coordinates give.
+    for (int k = 0; k < 4; ++k) f.z += f.lambda[k] * v[k].w;
+    f.distanceSquared = f.z.squaredNorm();
     best = f;
   }
   for (int k = 0; k < 4; ++k) {
-    if (!noisy && sameSign(detM, C[k])) continue;  // a noisy tetrahedron searches every face
-    const Feature<S> f = triangle(w, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4);
+    if (!flat && trusted[k] && sameSign(C[k], D[k])) continue;  // the origin is on k's side of face k
+    const Feature<S> f = triangle(v, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }
   return best;
@@ -266,28 +335,28 @@ Feature<S> tetrahedron(const std::array<Vector3<S>, 4>& w) {
 }  // namespace detail
 
 /// Refines the simplex to its feature closest to the origin (§2.2), setting
-/// `simplex.lambda` so that `simplex.closestPoint()` is that point z. Vertices not in
-/// the feature are dropped; the order of those kept is preserved.
+/// `simplex.lambda` and `simplex.z` (the closest point). Vertices not in the feature are
+/// dropped; the order of those kept is preserved.
 template <typename S>
 void reduceToClosestFeature(Simplex<S>& simplex) {
-  std::array<Vector3<S>, 4> w;
-  for (int k = 0; k < simplex.size; ++k) w[k] = simplex.vertices[k].w;
+  const detail::Vertices<S>& v = simplex.vertices;
   detail::Feature<S> f;
   switch (simplex.size) {
-    case 1: f = detail::vertexFeature(w, 0); break;
-    case 2: f = detail::segment(w, 0, 1); break;
-    case 3: f = detail::triangle(w, 0, 1, 2); break;
-    case 4: f = detail::tetrahedron(w); break;
+    case 1: f = detail::vertexFeature(v, 0); break;
+    case 2: f = detail::segment(v, 0, 1); break;
+    case 3: f = detail::triangle(v, 0, 1, 2); break;
+    case 4: f = detail::tetrahedron(v); break;
     default: return;
   }
   int kept = 0;
   for (int k = 0; k < simplex.size; ++k) {
     if (!(f.keep & (1u << k))) continue;
-    simplex.vertices[kept] = simplex.vertices[k];
+    if (kept != k) simplex.vertices[kept] = simplex.vertices[k];
     simplex.lambda[kept] = f.lambda[k];
     ++kept;
   }
   simplex.size = kept;
+  simplex.z = f.z;
 }
 
 }  // namespace gjkx
