@@ -437,8 +437,11 @@ TEMPLATE_TEST_CASE("hard: a visitor returning false stops the run", "[gjk][hard]
   CHECK(r.status == GjkStatus::StoppedByVisitor);
   CHECK(r.iterations == 1);
   CHECK(seen == 1);
-  // A visitor that stops at iteration 2 (of a run that needs more).
-  const GjkResult<S> r2 = gjk(P, Q, {}, nullptr, [](const GjkIteration<S>& it) { return it.i < 2; });
+  // A visitor that stops at iteration 2 (of a run that needs more: GJK on the curved
+  // sphere, not on its core, which would end sooner).
+  GjkSettings<S> curved;
+  curved.roundedCores = false;
+  const GjkResult<S> r2 = gjk(P, Q, curved, nullptr, [](const GjkIteration<S>& it) { return it.i < 2; });
   CHECK(r2.status == GjkStatus::StoppedByVisitor);
   CHECK(r2.iterations == 3);
 }

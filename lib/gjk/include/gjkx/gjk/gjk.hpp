@@ -6,6 +6,7 @@
 #include <gjkx/gjk/trace.hpp>
 #include <gjkx/support_mapping/support.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -56,6 +57,10 @@ struct GjkSettings {
   /// \f$\vec{s}_0\f$ for a cold start: "an arbitrary nonzero vector". Zero (the default)
   /// takes the direction from P's centre to Q's, which usually saves iterations.
   Vector3<S> initialDirection = Vector3<S>::Zero();
+  /// Rounded shapes (spheres, capsules: a core swept by a ball, support.hpp `IsRounded`):
+  /// run GJK on the cores and subtract the radii (the default), or, when false, on the
+  /// full curved supports as the paper does (which converges only linearly).
+  bool roundedCores = true;
 };
 
 /// What a GJK run found.
@@ -117,29 +122,11 @@ SimplexVertex<S> supportPair(const P& shapeP, const Q& shapeQ, const Vector3<S>&
 }
 }  // namespace detail
 
-/// GJK (§2.2): the closest distance between convex sets P and Q, and their closest points.
-///
-/// "Begin GJK with two convex polyhedra P and Q, an arbitrary nonzero vector \f$\vec{s}_0\f$,
-/// and two vertex sets \f$V_P\f$ and \f$V_Q\f$, initially empty. At each iteration i, append
-/// the vertices \f$S_P(\vec{s}_i)\f$ and \f$S_Q(-\vec{s}_i)\f$ to \f$V_P\f$ and \f$V_Q\f$ [...]
-/// Then calculate the feature of the Minkowski sum \f$V_Z = V_Q - V_P\f$ [...] which is closest
-/// to the origin. [...] GJK reiterates with \f$\vec{s}_{i+1}\f$ set to z until this distance no
-/// longer decreases."
-///
-/// Each iteration also measures the supporting distance \f$SD(P,Q,\vec{s}_i)\f$ of §2.3 (a
-/// lower bound of the distance, where the Minkowski distance is an upper bound); their
-/// gap is the convergence test, and with `settings.separationThreshold` the run stops at
-/// the first separating vector (the boolean query).
-///
-/// @param P, Q      support mappings (any types with `support(s)` and `center()`)
-/// @param settings  tolerances, iteration cap, optional separation threshold
-/// @param cache     optional warm start: read if valid, written at the end
-/// @param visit     optional per-iteration visitor `bool(const GjkIteration<S>&)`; returning
-///                  false stops the run (`StoppedByVisitor`). A `GjkTrace` keeps every iteration.
-template <typename ShapeP, typename ShapeQ, typename Visitor = NoGjkVisitor>
-GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
-                                       const GjkSettings<typename ShapeP::Scalar>& settings = {},
-                                       GjkCache<typename ShapeP::Scalar>* cache = nullptr, Visitor&& visit = {}) {
+namespace detail {
+/// The GJK loop itself (`gjk` without the rounded-shape dispatch).
+template <typename ShapeP, typename ShapeQ, typename Visitor>
+GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, const GjkSettings<typename ShapeP::Scalar>& settings,
+                                          GjkCache<typename ShapeP::Scalar>* cache, Visitor&& visit) {
   using S = typename ShapeP::Scalar;
   static_assert(std::is_same_v<S, typename ShapeQ::Scalar>, "P and Q must use the same scalar type");
   constexpr bool visiting = !std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>;
@@ -294,6 +281,112 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
   }
   finish(GjkStatus::IterationCap);
   return result;
+}
+
+/// The core of a shape as a support mapping of its own (support.hpp, `IsRounded`):
+/// \f$S_C(\vec{s})\f$ of a rounded shape, the shape itself for any other.
+template <typename X>
+struct CoreOf {
+  /// The scalar type.
+  using Scalar = typename X::Scalar;
+  /// The shape whose core this is.
+  const X& shape;
+  /// \f$S_C(\vec{s})\f$.
+  Vector3<Scalar> support(const Vector3<Scalar>& s) const {
+    SupportHint hint = 0;
+    return coreSupportFrom(shape, s, hint);
+  }
+  /// \f$S_C(\vec{s})\f$ from a hint.
+  Vector3<Scalar> support(const Vector3<Scalar>& s, SupportHint& hint) const { return coreSupportFrom(shape, s, hint); }
+  /// The shape's centre (inside its core for the spheres and capsules).
+  Vector3<Scalar> center() const { return shape.center(); }
+};
+
+/// GJK on rounded shapes \f$P = C_P \oplus B(r_P)\f$, \f$Q = C_Q \oplus B(r_Q)\f$, r = r_P + r_Q.
+///
+/// Every supporting distance of the shapes is the cores' less r (support.hpp), so GJK
+/// runs on the cores, with the boolean threshold raised by r, and the answer comes back:
+/// - the cores are d > r apart: P and Q are d - r apart, along the same z, their closest
+///   points the cores' moved by \f$r_P\,\hat z\f$ and \f$-r_Q\,\hat z\f$;
+/// - the cores are d <= r apart (or overlap): P and Q overlap;
+/// - the lower bound and every visited iteration's distances are less r.
+/// The iterations (and a trace) are the cores': on two spheres, one support query each.
+template <typename ShapeP, typename ShapeQ, typename Visitor>
+GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, typename ShapeP::Scalar rP,
+                                              typename ShapeP::Scalar rQ, const GjkSettings<typename ShapeP::Scalar>& settings,
+                                              GjkCache<typename ShapeP::Scalar>* cache, Visitor&& visit) {
+  using S = typename ShapeP::Scalar;
+  const S r = rP + rQ;
+  GjkSettings<S> coreSettings = settings;
+  coreSettings.separationThreshold = settings.separationThreshold + r;  // SD(P, Q) > t  <=>  SD(cores) > t + r
+  GjkResult<S> result;
+  if constexpr (std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>) {
+    result = gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, NoGjkVisitor{});
+  } else {
+    auto ofShapes = [&](const GjkIteration<S>& core) {
+      GjkIteration<S> record = core;
+      record.supportingDistance -= r;
+      record.minkowskiDistance = std::max(S(0), record.minkowskiDistance - r);
+      return visit(record);
+    };
+    result = gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, ofShapes);
+  }
+  result.lowerBound -= r;
+  if (result.status == GjkStatus::Overlapping || result.status == GjkStatus::NumericalFailure) return result;
+  const S dCore = result.distance;
+  if (!(dCore > r)) {  // the balls about the cores' closest points overlap
+    if (result.status == GjkStatus::Separated) {
+      result.status = GjkStatus::Overlapping;
+      result.z = Vector3<S>::Zero();
+    }
+    result.distance = S(0);
+    return result;
+  }
+  const Vector3<S> zHat = result.z / dCore;
+  result.distance = dCore - r;
+  result.z = zHat * result.distance;
+  result.witnessP += rP * zHat;
+  result.witnessQ -= rQ * zHat;
+  return result;
+}
+}  // namespace detail
+
+/// GJK (§2.2): the closest distance between convex sets P and Q, and their closest points.
+///
+/// "Begin GJK with two convex polyhedra P and Q, an arbitrary nonzero vector \f$\vec{s}_0\f$,
+/// and two vertex sets \f$V_P\f$ and \f$V_Q\f$, initially empty. At each iteration i, append
+/// the vertices \f$S_P(\vec{s}_i)\f$ and \f$S_Q(-\vec{s}_i)\f$ to \f$V_P\f$ and \f$V_Q\f$ [...]
+/// Then calculate the feature of the Minkowski sum \f$V_Z = V_Q - V_P\f$ [...] which is closest
+/// to the origin. [...] GJK reiterates with \f$\vec{s}_{i+1}\f$ set to z until this distance no
+/// longer decreases."
+///
+/// Each iteration also measures the supporting distance \f$SD(P,Q,\vec{s}_i)\f$ of §2.3 (a
+/// lower bound of the distance, where the Minkowski distance is an upper bound); their
+/// gap is the convergence test, and with `settings.separationThreshold` the run stops at
+/// the first separating vector (the boolean query).
+///
+/// Rounded shapes (spheres, capsules; support.hpp `IsRounded`) are, by default, handled
+/// by GJK on their cores with the radii subtracted (`detail::gjkOnCores`): the paper's
+/// GJK on the curved surface converges only linearly (16 to 29 iterations on two spheres
+/// at the default tolerance), on the cores it ends in one to three.
+///
+/// @param P, Q      support mappings (any types with `support(s)` and `center()`)
+/// @param settings  tolerances, iteration cap, optional separation threshold
+/// @param cache     optional warm start: read if valid, written at the end
+/// @param visit     optional per-iteration visitor `bool(const GjkIteration<S>&)`; returning
+///                  false stops the run (`StoppedByVisitor`). A `GjkTrace` keeps every iteration.
+template <typename ShapeP, typename ShapeQ, typename Visitor = NoGjkVisitor>
+GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
+                                       const GjkSettings<typename ShapeP::Scalar>& settings = {},
+                                       GjkCache<typename ShapeP::Scalar>* cache = nullptr, Visitor&& visit = {}) {
+  using S = typename ShapeP::Scalar;
+  static_assert(std::is_same_v<S, typename ShapeQ::Scalar>, "P and Q must use the same scalar type");
+  if constexpr (IsRounded<ShapeP>::value || IsRounded<ShapeQ>::value) {
+    const S rP = coreRadiusOf(P), rQ = coreRadiusOf(Q);
+    if (settings.roundedCores && (rP > S(0) || rQ > S(0)))
+      return detail::gjkOnCores(P, Q, rP, rQ, settings, cache, std::forward<Visitor>(visit));
+  }
+  return detail::gjkRun(P, Q, settings, cache, std::forward<Visitor>(visit));
 }
 
 }  // namespace gjkx

@@ -31,6 +31,16 @@ struct Placed {
   }
   /// The shape's centre, in the world.
   Vector3<Scalar> center() const { return worldFromBody(shape.center()); }
+  /// A placed rounded shape is rounded, with the same radius (support.hpp, `IsRounded`).
+  template <typename X = Shape, typename = std::enable_if_t<IsRounded<X>::value>>
+  Scalar coreRadius() const {
+    return shape.coreRadius();
+  }
+  /// The support of the placed core, $R\,S_C(R^Tec{s}) + p$.
+  template <typename X = Shape, typename = std::enable_if_t<IsRounded<X>::value>>
+  Vector3<Scalar> coreSupport(const Vector3<Scalar>& s, SupportHint& hint) const {
+    return worldFromBody(shape.coreSupport(worldFromBody.toBodyDirection(s), hint));
+  }
 };
 
 /// `place(shape, pose)`: the shape at a pose (the pose is checked).

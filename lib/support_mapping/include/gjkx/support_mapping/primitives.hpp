@@ -122,6 +122,10 @@ struct Sphere {
   Vector3<S> center() const { return Vector3<S>::Zero(); }
   /// The largest distance of a point of the shape from the body origin (§3, certified margin).
   S boundingRadius() const { return radius; }
+  /// A sphere is rounded (support.hpp, `IsRounded`): the point at the origin swept by a ball of this radius.
+  S coreRadius() const { return radius; }
+  /// The support of the core: the centre, whatever the direction.
+  Vector3<S> coreSupport(const Vector3<S>& /*s*/, SupportHint& /*hint*/) const { return Vector3<S>::Zero(); }
 };
 
 /// The capsule: all points within r of the segment [a, b]. Its support is the
@@ -149,6 +153,10 @@ struct Capsule {
   Vector3<S> center() const { return axis.center(); }
   /// The largest distance of a point of the shape from the body origin (§3, certified margin).
   S boundingRadius() const { return axis.boundingRadius() + radius; }
+  /// A capsule is rounded (support.hpp, `IsRounded`): its axis swept by a ball of this radius.
+  S coreRadius() const { return radius; }
+  /// The support of the core: the axis segment's.
+  Vector3<S> coreSupport(const Vector3<S>& s, SupportHint& /*hint*/) const { return axis.support(s); }
 
  private:
   static const Vector3<S>& checked(const Vector3<S>& end, const char* field) {

@@ -40,6 +40,15 @@ class Shape {
   S boundingRadius() const {
     return std::visit([](const auto& x) { return S(x.boundingRadius()); }, shape_);
   }
+  /// The radius of the alternative if it is rounded (sphere, capsule), else 0: a Shape is
+  /// always "rounded" (support.hpp, `IsRounded`), with a radius known only at run time.
+  S coreRadius() const {
+    return std::visit([](const auto& x) { return S(coreRadiusOf(x)); }, shape_);
+  }
+  /// The support of the alternative's core (the alternative itself if it is not rounded).
+  Vector3<S> coreSupport(const Vector3<S>& s, SupportHint& hint) const {
+    return std::visit([&](const auto& x) { return Vector3<S>(coreSupportFrom(x, s, hint)); }, shape_);
+  }
   /// The alternative held.
   const Variant& variant() const { return shape_; }
 

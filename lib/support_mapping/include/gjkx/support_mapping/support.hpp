@@ -44,6 +44,46 @@ Vector3<typename X::Scalar> supportFrom(const X& x, const Vector3<typename X::Sc
   }
 }
 
+/// A *rounded* shape is a core swept by a ball, \f$X = C \oplus B(r)\f$: a sphere is a
+/// point swept by a ball, a capsule a segment. It says so with two more members,
+/// - `Scalar coreRadius() const;` r, and
+/// - `Vector3<Scalar> coreSupport(const Vector3<Scalar>& s, SupportHint& hint) const;`
+///   \f$S_C(\vec{s})\f$, the support of the core.
+///
+/// The support of a Minkowski sum is the sum of the supports, so
+/// \f$S_X(\vec{s}) = S_C(\vec{s}) + r\,\vec{s}/\lVert\vec{s}\rVert\f$, and the supporting distance
+/// of two rounded shapes is that of their cores less the radii,
+/// \f$SD(P, Q, \vec{s}) = SD(C_P, C_Q, \vec{s}) - r_P - r_Q\f$ (§2.3). GJK uses it to run on
+/// the cores, which are polytopes and end in a few iterations, instead of the curved
+/// surfaces, where it converges only linearly (see `gjk`).
+template <typename X, typename = void>
+struct IsRounded : std::false_type {};
+/// A shape with `coreRadius()` is rounded.
+template <typename X>
+struct IsRounded<X, std::void_t<decltype(std::declval<const X&>().coreRadius())>> : std::true_type {};
+
+/// The radius r of a rounded shape \f$C \oplus B(r)\f$; 0 for any other shape.
+template <typename X>
+typename X::Scalar coreRadiusOf(const X& x) {
+  if constexpr (IsRounded<X>::value) {
+    return x.coreRadius();
+  } else {
+    (void)x;
+    return typename X::Scalar(0);
+  }
+}
+
+/// The support of a shape's core: `coreSupport` for a rounded shape, the shape's own
+/// support for any other (its core is itself).
+template <typename X>
+Vector3<typename X::Scalar> coreSupportFrom(const X& x, const Vector3<typename X::Scalar>& s, SupportHint& hint) {
+  if constexpr (IsRounded<X>::value) {
+    return x.coreSupport(s, hint);
+  } else {
+    return supportFrom(x, s, hint);
+  }
+}
+
 /// Checks that a size (radius, half extent) is finite and not negative; the message names the field.
 template <typename Scalar>
 void requireNonNegative(Scalar value, const std::string& field) {
