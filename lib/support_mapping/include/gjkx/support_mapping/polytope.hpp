@@ -64,13 +64,12 @@ class Polytope {
 
   /// \f$S_X(\vec{s})\f$ by looking at every vertex: the reference the tests hold hill climbing to.
   int supportIndexLinearScan(const Vector3<S>& s) const {
-    // Fix (tests): s·x measured from vertex 0, as in climb() below, so that the reference
-    // keeps its accuracy for a polytope far from the origin.
-    const Vector3<S>& origin = data_->vertices[0];
+    // Fix (tests): s·(x - c) from the centred vertices, as in climb() below, so that the
+    // reference keeps its accuracy for a polytope far from the origin.
     int best = 0;
-    S bestValue = S(0);
+    S bestValue = s.dot(data_->centred[0]);
     for (int v = 1; v < vertexCount(); ++v) {
-      const S value = s.dot(data_->vertices[v] - origin);
+      const S value = s.dot(data_->centred[v]);
       if (value > bestValue) {
         bestValue = value;
         best = v;
@@ -102,6 +101,7 @@ class Polytope {
  private:
   struct Data {
     std::vector<Vector3<S>> vertices;
+    std::vector<Vector3<S>> centred;  // vertices - centroid, for the climb's comparisons
     std::vector<int> firstNeighbour, neighbours;
     std::vector<std::array<int, 3>> triangles;
     Vector3<S> centroid;
@@ -117,6 +117,7 @@ class Polytope {
       data->centroid += data->vertices.back();
     }
     data->centroid /= S(hull.vertices.size());
+    for (const auto& v : data->vertices) data->centred.push_back(v - data->centroid);
     data->radius = S(0);
     for (const auto& v : data->vertices) data->radius = std::max(data->radius, v.norm());
     data->firstNeighbour = hull.firstNeighbour;
@@ -136,21 +137,20 @@ class Polytope {
   int climb(const Vector3<S>& s, int start, std::vector<int>* path) const {
     const Data& d = *data_;
     int v = (start >= 0 && start < vertexCount()) ? start : 0;
-    // Fix (tests): compare s·(x - x_start), not s·x. For a polytope far from the origin
-    // (coordinates near 10^5 in float) s·x rounds to a grid coarser than the gain of an
-    // uphill edge, the neighbour then ties and the climb stopped far below the top
-    // (shortfalls of nearly the polytope's diameter were seen). The difference of two nearby
-    // vertices is exact, so the values keep the precision of the polytope's size; and
-    // measured from one fixed vertex, each vertex has one value, so the climb still
-    // rises strictly and always ends.
-    const Vector3<S> origin = d.vertices[v];
-    S best = S(0);
+    // Fix (tests): compare s·(x - c), not s·x, c the centroid. For a polytope far from the
+    // origin (coordinates near 10^5 in float) s·x rounds to a grid coarser than the gain of
+    // an uphill edge, the neighbour then ties and the climb stopped far below the top
+    // (shortfalls of nearly the polytope's diameter were seen). The vertices are kept
+    // relative to c as well (`centred`, rounded once, to the precision of the polytope's
+    // size), so the values keep that precision at no cost per step; each vertex has one
+    // value, so the climb rises strictly and always ends.
+    S best = s.dot(d.centred[v]);
     if (path) path->push_back(v);
     for (;;) {
       int next = v;
       for (int k = d.firstNeighbour[v]; k < d.firstNeighbour[v + 1]; ++k) {
         const int n = d.neighbours[k];
-        const S value = s.dot(d.vertices[n] - origin);
+        const S value = s.dot(d.centred[n]);
         if (value > best) {
           best = value;
           next = n;
