@@ -228,6 +228,24 @@ TEMPLATE_TEST_CASE("rounded: a run-time Shape, a warm start, a boolean query and
   CHECK(trace.iterations.back().minkowskiDistance == Approx(double(r.distance)).margin(double(tolerance<S>())));
 }
 
+TEST_CASE("rounded: a boolean query that stops before any simplex says nothing NaN", "[gjk][rounded][fuzz]") {
+  // Found by tests/fuzz/fuzz_gjk: a boolean query whose first direction already separates
+  // stops at iteration 0, before any simplex, with an infinite distance (an upper bound)
+  // and z = 0; taking the radii off must leave those as they are (it gave z = 0 * inf).
+  GjkSettings<double> boolean;
+  boolean.separationThreshold = 0;
+  const auto r = gjk(place(Sphere<double>(1), Pose<double>::identity()), place(Sphere<double>(1), Pose<double>::translate({5, 0, 0})),
+                     boolean);
+  CHECK(r.status == GjkStatus::SeparatingVector);
+  CHECK(r.iterations == 1);
+  CHECK(r.lowerBound == Approx(3.0));
+  CHECK(!std::isnan(r.distance));
+  CHECK(r.distance >= r.lowerBound);
+  CHECK(r.z.allFinite());
+  CHECK(r.witnessP.allFinite());
+  CHECK(r.witnessQ.allFinite());
+}
+
 TEST_CASE("rounded: touching and zero-radius shapes", "[gjk][rounded]") {
   // Two unit spheres exactly 2 apart touch: Overlapping or a distance of round-off. A
   // sphere of radius 0 is a point; a capsule of radius 0 a segment.

@@ -342,11 +342,13 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
     result.distance = S(0);
     return result;
   }
-  const Vector3<S> zHat = result.z / dCore;
   result.distance = dCore - r;
-  result.z = zHat * result.distance;
-  result.witnessP += rP * zHat;
-  result.witnessQ -= rQ * zHat;
+  if (std::isfinite(dCore)) {  // (a boolean query may stop before any simplex: no z yet, distance infinite)
+    const Vector3<S> zHat = result.z / dCore;
+    result.z = zHat * result.distance;
+    result.witnessP += rP * zHat;
+    result.witnessQ -= rQ * zHat;
+  }
   return result;
 }
 }  // namespace detail
