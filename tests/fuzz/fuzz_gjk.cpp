@@ -32,7 +32,8 @@ void run(Decoder& in) {
     const Cloud a = cloudOf(shapeP, p), b = cloudOf(shapeQ, q);
     const Real ref = signedDistance(a, b);
     const Real extent = std::max(a.extent(), b.extent());
-    const bool rounded = a.radius > 0 || b.radius > 0;
+    // Rounded shapes run on their cores (exact, like polytopes) unless told otherwise.
+    const bool rounded = (a.radius > 0 || b.radius > 0) && !settings.roundedCores;
     context() = std::string(sizeof(S) == 4 ? "float " : "double ") + what + " P " + describe(a) + " Q " + describe(b);
     const GjkResult<S> r = gjk(place(shapeP, p), place(shapeQ, q), settings, cache);
     checkGjk(r, settings, ref, extent, rounded, what);
