@@ -422,9 +422,12 @@ T ourShape(const ShapeDesc& d) {
   else return *d.polytope;
 }
 
-/// Ours (gjkx::gjk for distance, gjkx::intersect for boolean) in scalar S.
+/// Ours (gjkx::gjk for distance, gjkx::intersect for boolean) in scalar S. With
+/// `roundedCores` false, spheres and capsules run the paper's GJK on their curved surfaces
+/// (the "ours-curved" rows) instead of on their cores.
 template <typename T>
-GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char* method, bool warm, bool boolean, int repeats) {
+GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char* method, bool warm, bool boolean, int repeats,
+                   bool roundedCores = true) {
   using S = typename T::Scalar;
   const std::vector<GjkQuery>& queries = warm ? w.warm : w.cold;
   std::vector<Placed<T>> P, Q;
@@ -432,8 +435,10 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
     P.push_back(Placed<T>{ourShape<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
     Q.push_back(Placed<T>{ourShape<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
   }
-  const GjkSettings<S> settings;
-  const IntersectionSettings<S> intersection;
+  GjkSettings<S> settings;
+  settings.roundedCores = roundedCores;
+  IntersectionSettings<S> intersection;
+  intersection.gjk.roundedCores = roundedCores;
   GjkCache<S> cache;
   GjkCache<S>* cachePtr = warm ? &cache : nullptr;
   auto reset = [&] { cache = GjkCache<S>{}; };
@@ -472,44 +477,6 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
     row.otherFailure += other;
   }
   return row;
-}
-
-/// Not a method of the library (yet): what the core-plus-radius treatment would give
-/// on spheres and capsules (Bullet's margins): GJK between the centre points / axis
-/// segments, then the radii subtracted. Shown as "ours-core" rows, left out of the RATIO lines.
-inline GjkRow measureOursCore(const GjkWorkload& w, const std::string& workload, bool warm, bool boolean, int repeats) {
-  using S = double;
-  const std::vector<GjkQuery>& queries = warm ? w.warm : w.cold;
-  auto core = [](const ShapeDesc& d, const Pose<S>& pose) {
-    const S h = d.kind == ShapeKind::Capsule ? d.halfLength : 0.0;
-    return Placed<Segment<S>>{Segment<S>(Vector3<S>(0, 0, -h), Vector3<S>(0, 0, h)), pose};
-  };
-  std::vector<Placed<Segment<S>>> P, Q;
-  std::vector<S> radii;
-  for (const auto& q : queries) {
-    P.push_back(core(w.shapes[q.shapeP], q.poseP));
-    Q.push_back(core(w.shapes[q.shapeQ], q.poseQ));
-    radii.push_back(w.shapes[q.shapeP].radius + w.shapes[q.shapeQ].radius);
-  }
-  const GjkSettings<S> settings;
-  GjkCache<S> cache;
-  GjkCache<S>* cachePtr = warm ? &cache : nullptr;
-  auto answer = [&](int k) -> double {
-    if (warm && queries[k].startsTrajectory) cache.valid = false;
-    if (boolean) {
-      IntersectionSettings<S> intersection;
-      intersection.collisionTolerance += radii[k];
-      const auto r = intersect(P[k], Q[k], intersection, cachePtr);
-      if (r.status == IntersectionStatus::Disjoint) return 0.0;
-      if (r.status == IntersectionStatus::Intersecting) return 1.0;
-      return std::nan("");
-    }
-    const auto r = gjk(P[k], Q[k], settings, cachePtr);
-    if (r.status == GjkStatus::Separated || r.status == GjkStatus::Overlapping) return std::max(0.0, r.distance - radii[k]);
-    return std::nan("");
-  };
-  return measure(workload, "ours-core", warm ? "GjkCache" : "-", true, queries, boolean, repeats, answer,
-                 [&] { cache = GjkCache<S>{}; });
 }
 
 template <template <typename> class Shape>
@@ -628,11 +595,11 @@ inline std::vector<GjkRow> runGjkComparisons(const GjkStudyOptions& options) {
           case ShapeKind::Box: detail::measureOursBothScalars<Box>(w, workload, warm, boolean, repeats, rows); break;
           case ShapeKind::Sphere:
             detail::measureOursBothScalars<Sphere>(w, workload, warm, boolean, repeats, rows);
-            rows.push_back(detail::measureOursCore(w, workload, warm, boolean, repeats));
+            rows.push_back(detail::measureOurs<Sphere<double>>(w, workload, "ours-curved", warm, boolean, repeats, false));
             break;
           case ShapeKind::Capsule:
             detail::measureOursBothScalars<Capsule>(w, workload, warm, boolean, repeats, rows);
-            rows.push_back(detail::measureOursCore(w, workload, warm, boolean, repeats));
+            rows.push_back(detail::measureOurs<Capsule<double>>(w, workload, "ours-curved", warm, boolean, repeats, false));
             break;
           case ShapeKind::Polytope: detail::measureOursBothScalars<Polytope>(w, workload, warm, boolean, repeats, rows); break;
         }

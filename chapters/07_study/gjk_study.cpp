@@ -253,10 +253,10 @@ struct Style {
   const char* colour;
   int point;
 };
-// Ours in blues (filled: double, open: float, diamond: the core-plus-radius variant); each peer its own colour.
+// Ours in blues (filled: double, open: float, diamond: the paper's GJK on the curved surfaces, roundedCores = false); each peer its own colour.
 Style styleOf(const std::string& method) {
   static const std::map<std::string, Style> styles = {
-      {"ours-double", {"#08306b", 7}}, {"ours-float", {"#4292c6", 6}},   {"ours-core", {"#17becf", 13}},
+      {"ours-double", {"#08306b", 7}}, {"ours-float", {"#4292c6", 6}},   {"ours-curved", {"#17becf", 13}},
       {"ccd-gjk", {"#ff7f0e", 5}},     {"ccd-mpr", {"#8c564b", 4}},      {"fcl-libccd", {"#d62728", 9}},
       {"fcl-indep", {"#e377c2", 11}},  {"bullet-gjk", {"#2ca02c", 15}},  {"bullet-gjk-dist", {"#2ca02c", 15}}};
   const auto it = styles.find(method);

@@ -1,5 +1,5 @@
 // Google Benchmark of our GJK queries (chapter 07): distance and boolean, cold and
-// warm-started, on the study's 100-vertex polytopes and boxes. The comparison with the
+// warm-started, on the study's 100-vertex polytopes, boxes, spheres and capsules. The comparison with the
 // peers is gjk_study; this is the fine-grained timer for the speed work on lib/gjk.
 //
 //   study_benchmarks [--benchmark_filter=...]
@@ -20,7 +20,12 @@ const GjkWorkload& workload(ShapeKind kind, int vertices) {
   if (it == cache.end()) {
     GjkStudyOptions options;
     options.quick = true;
-    const char* name = kind == ShapeKind::Box ? "box" : vertices == 12 ? "polytope12" : vertices == 100 ? "polytope100" : "polytope1000";
+    const char* name = kind == ShapeKind::Box       ? "box"
+                       : kind == ShapeKind::Sphere  ? "sphere"
+                       : kind == ShapeKind::Capsule ? "capsule"
+                       : vertices == 12             ? "polytope12"
+                       : vertices == 100            ? "polytope100"
+                                                    : "polytope1000";
     it = cache.emplace(key, study::detail::makeWorkload(name, kind, vertices, options)).first;
   }
   return it->second;
@@ -59,6 +64,8 @@ void booleanPolytope100WarmFloat(benchmark::State& s) { runQueries<Polytope<floa
 void distanceBox(benchmark::State& s) { runQueries<Box<double>>(s, ShapeKind::Box, 8, false, false); }
 void distanceBoxWarm(benchmark::State& s) { runQueries<Box<double>>(s, ShapeKind::Box, 8, true, false); }
 void distancePolytope1000(benchmark::State& s) { runQueries<Polytope<double>>(s, ShapeKind::Polytope, 1000, false, false); }
+void distanceSphere(benchmark::State& s) { runQueries<Sphere<double>>(s, ShapeKind::Sphere, 0, false, false); }
+void distanceCapsule(benchmark::State& s) { runQueries<Capsule<double>>(s, ShapeKind::Capsule, 0, false, false); }
 
 }  // namespace
 
@@ -70,5 +77,7 @@ BENCHMARK(booleanPolytope100WarmFloat);
 BENCHMARK(distanceBox);
 BENCHMARK(distanceBoxWarm);
 BENCHMARK(distancePolytope1000);
+BENCHMARK(distanceSphere);
+BENCHMARK(distanceCapsule);
 
 BENCHMARK_MAIN();

@@ -319,18 +319,21 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
   const S r = rP + rQ;
   GjkSettings<S> coreSettings = settings;
   coreSettings.separationThreshold = settings.separationThreshold + r;  // SD(P, Q) > t  <=>  SD(cores) > t + r
-  GjkResult<S> result;
-  if constexpr (std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>) {
-    result = gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, NoGjkVisitor{});
-  } else {
-    auto ofShapes = [&](const GjkIteration<S>& core) {
-      GjkIteration<S> record = core;
-      record.supportingDistance -= r;
-      record.minkowskiDistance = std::max(S(0), record.minkowskiDistance - r);
-      return visit(record);
-    };
-    result = gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, ofShapes);
-  }
+  // (Built in place: the result is large, and a default-constructed one assigned from the
+  // run cost a third of a two-sphere query.)
+  GjkResult<S> result = [&] {
+    if constexpr (std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>) {
+      return gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, NoGjkVisitor{});
+    } else {
+      auto ofShapes = [&](const GjkIteration<S>& core) {
+        GjkIteration<S> record = core;
+        record.supportingDistance -= r;
+        record.minkowskiDistance = std::max(S(0), record.minkowskiDistance - r);
+        return visit(record);
+      };
+      return gjkRun(CoreOf<ShapeP>{P}, CoreOf<ShapeQ>{Q}, coreSettings, cache, ofShapes);
+    }
+  }();
   result.lowerBound -= r;
   if (result.status == GjkStatus::Overlapping || result.status == GjkStatus::NumericalFailure) return result;
   const S dCore = result.distance;
