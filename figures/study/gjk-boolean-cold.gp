@@ -14,8 +14,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [89.5109:4071.68]
+set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
+set xrange [82.8739:5400.46]
 set yrange [2e-05:3]
 set title 'box (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -39,8 +39,8 @@ set lmargin at screen 0.38
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('50' 50, '100' 100, '200' 200, '500' 500)
-set xrange [36.8132:955.162]
+set xtics ('100' 100, '200' 200, '500' 500)
+set xrange [53.1402:779.657]
 set yrange [2e-05:3]
 set title 'sphere (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -65,7 +65,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000)
-set xrange [82.8739:16537.9]
+set xrange [78.8917:14319.9]
 set yrange [2e-05:3]
 set title 'capsule (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -89,8 +89,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
-set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [171.5:5290.64]
+set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
+set xrange [177.694:4562.23]
 set yrange [2e-05:3]
 set title 'polytope12 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -115,7 +115,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [505.164:48691.9]
+set xrange [533.481:45205.3]
 set yrange [2e-05:3]
 set title 'polytope100 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -140,7 +140,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('10000' 10000, '100000' 100000)
-set xrange [1179.61:788226]
+set xrange [1139.75:726909]
 set yrange [2e-05:3]
 set title 'polytope1000 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -177,5 +177,5 @@ set xrange [0:1]
 set yrange [0:1]
 set key at screen 0.5,0.105 center top horizontal maxrows 1 width 2 samplen 1 font ',10'
 set label 1 "A wrong-answer rate of 0 is drawn at 1e-04; a label says how many answers were wrong. A label says when a method gave no answer on some queries." at screen 0.5,0.04 center font ',10'
-plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 5 ps 1.6 lc rgb '#ff7f0e' title 'ccd-gjk', NaN with points pt 4 ps 1.6 lc rgb '#8c564b' title 'ccd-mpr', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk-dist', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-core'
+plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 5 ps 1.6 lc rgb '#ff7f0e' title 'ccd-gjk', NaN with points pt 4 ps 1.6 lc rgb '#8c564b' title 'ccd-mpr', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk-dist', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-curved'
 unset multiplot

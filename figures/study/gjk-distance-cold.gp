@@ -15,7 +15,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('500' 500, '1000' 1000, '2000' 2000)
-set xrange [321.275:2115.01]
+set xrange [405.432:2256.46]
 set yrange [2e-19:10]
 set title 'box (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -36,7 +36,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('50' 50, '100' 100, '200' 200)
-set xrange [30.1319:488.966]
+set xrange [29.6895:425.062]
 set yrange [2e-19:10]
 set title 'sphere (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -57,7 +57,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [50.5296:43028.2]
+set xrange [50.5296:32482.3]
 set yrange [2e-19:10]
 set title 'capsule (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -78,7 +78,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '2000' 2000)
-set xrange [570.737:3787.86]
+set xrange [675.292:3758.38]
 set yrange [2e-19:10]
 set title 'polytope12 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -99,7 +99,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [1289.48:27027.7]
+set xrange [1319.61:26022.6]
 set yrange [2e-19:10]
 set title 'polytope100 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -120,7 +120,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('5000' 5000, '10000' 10000, '20000' 20000, '50000' 50000, '100000' 100000, '200000' 200000)
-set xrange [2964.08:338628]
+set xrange [3251.2:326287]
 set yrange [2e-19:10]
 set title 'polytope1000 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -153,5 +153,5 @@ set xrange [0:1]
 set yrange [0:1]
 set key at screen 0.5,0.105 center top horizontal maxrows 1 width 2 samplen 1 font ',10'
 set label 1 "An error of 0 is drawn at 1e-18; the bar reaches the maximum error over the queries. A label says when a method gave no answer on some queries." at screen 0.5,0.04 center font ',10'
-plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-core'
+plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-curved'
 unset multiplot

@@ -14,8 +14,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [161.323:2192.22]
+set xtics ('500' 500, '1000' 1000)
+set xrange [213.136:1958.83]
 set yrange [2e-19:10]
 set title 'box (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -36,7 +36,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('50' 50, '100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [31.0169:6571.3]
+set xrange [31.0169:8631.05]
 set yrange [2e-19:10]
 set title 'sphere (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -57,7 +57,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000)
-set xrange [51.857:17533.8]
+set xrange [51.8128:14524]
 set yrange [2e-19:10]
 set title 'capsule (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -78,7 +78,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000)
-set xrange [292.868:4219.07]
+set xrange [251.719:4195.28]
 set yrange [2e-19:10]
 set title 'polytope12 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -99,7 +99,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [403.219:31881.4]
+set xrange [386.406:32009.4]
 set yrange [2e-19:10]
 set title 'polytope100 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -120,7 +120,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [708.123:571379]
+set xrange [718.742:500646]
 set yrange [2e-19:10]
 set title 'polytope1000 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -153,5 +153,5 @@ set xrange [0:1]
 set yrange [0:1]
 set key at screen 0.5,0.105 center top horizontal maxrows 1 width 2 samplen 1 font ',10'
 set label 1 "An error of 0 is drawn at 1e-18; the bar reaches the maximum error over the queries. A label says when a method gave no answer on some queries." at screen 0.5,0.04 center font ',10'
-plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-core'
+plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-curved'
 unset multiplot
