@@ -138,13 +138,43 @@ Vector3<S> edge(const Vertices<S>& v, int a, int b) {
   return (v[b].q - v[a].q) - (v[b].p - v[a].p);
 }
 
+/// What the sub-algorithm measures once per call and reads many times (speed: a
+/// tetrahedron's faces share their edges): each vertex's \f$\lVert w\rVert^2\f$, and every
+/// edge (`edge`, from the support points) with its squared length.
 template <typename S>
-Feature<S> vertexFeature(const Vertices<S>& v, int a) {
+struct Geometry {
+  /// The vertices.
+  const Vertices<S>& v;
+  /// \f$\lVert w_k\rVert^2\f$.
+  std::array<S, 4> w2{};
+  /// \f$w_b - w_a\f$ for a < b, at `pair(a, b)`.
+  std::array<Vector3<S>, 6> edges;
+  /// Their squared lengths.
+  std::array<S, 6> edges2{};
+  /// Measures the first `size` vertices.
+  Geometry(const Vertices<S>& vertices, int size) : v(vertices) {
+    for (int k = 0; k < size; ++k) w2[k] = v[k].w.squaredNorm();
+    for (int a = 0; a < size; ++a)
+      for (int b = a + 1; b < size; ++b) {
+        edges[pair(a, b)] = detail::edge(v, a, b);
+        edges2[pair(a, b)] = edges[pair(a, b)].squaredNorm();
+      }
+  }
+  /// The slot of edge (a, b), a < b: (0,1) (0,2) (0,3) (1,2) (1,3) (2,3).
+  static int pair(int a, int b) { return a == 0 ? b - 1 : (a == 1 ? b + 1 : 5); }
+  /// \f$w_b - w_a\f$.
+  Vector3<S> edge(int a, int b) const { return a < b ? edges[pair(a, b)] : Vector3<S>(-edges[pair(b, a)]); }
+  /// \f$\lVert w_b - w_a\rVert^2\f$.
+  S edge2(int a, int b) const { return a < b ? edges2[pair(a, b)] : edges2[pair(b, a)]; }
+};
+
+template <typename S>
+Feature<S> vertexFeature(const Geometry<S>& g, int a) {
   Feature<S> f;
   f.keep = 1u << a;
   f.lambda[a] = S(1);
-  f.z = v[a].w;
-  f.distanceSquared = f.z.squaredNorm();
+  f.z = g.v[a].w;
+  f.distanceSquared = g.w2[a];
   return f;
 }
 
@@ -160,11 +190,12 @@ Feature<S> vertexFeature(const Vertices<S>& v, int a) {
 /// \f$\lambda_A = (B_I - p0_I)/t_I\f$ and \f$\lambda_B = (p0_I - A_I)/t_I\f$. Both agree in sign
 /// with \f$t_I\f$ exactly when p0 lies inside the segment; otherwise the closest point is an end.
 template <typename S>
-Feature<S> segment(const Vertices<S>& v, int a, int b) {
-  const Vector3<S> t = edge(v, a, b);
-  const S tt = t.squaredNorm();
-  if (!(tt > S(0))) return vertexFeature(v, a);  // coincident ends: a point
-  const Vector3<S>& wo = v[a].w.squaredNorm() <= v[b].w.squaredNorm() ? v[a].w : v[b].w;
+Feature<S> segment(const Geometry<S>& g, int a, int b) {
+  const Vertices<S>& v = g.v;
+  const Vector3<S> t = g.edge(a, b);
+  const S tt = g.edge2(a, b);
+  if (!(tt > S(0))) return vertexFeature(g, a);  // coincident ends: a point
+  const Vector3<S>& wo = g.w2[a] <= g.w2[b] ? v[a].w : v[b].w;
   const Vector3<S> p0 = t.cross(wo.cross(t)) / tt;
   int I = 0;
   t.cwiseAbs().maxCoeff(&I);
@@ -181,7 +212,7 @@ Feature<S> segment(const Vertices<S>& v, int a, int b) {
     return f;
   }
   // p0 is beyond one end: if it is before A (cB disagrees) the closest point is A.
-  return sameSign(muMax, cB) ? vertexFeature(v, b) : vertexFeature(v, a);
+  return sameSign(muMax, cB) ? vertexFeature(g, b) : vertexFeature(g, a);
 }
 
 /// Twice the signed area of the 2D parallelogram (u, v) in the coordinates (x, y).
@@ -202,9 +233,9 @@ struct TriangleNormal {
 /// longest edge): on a needle every other pair is nearly parallel and their cross
 /// product is mostly round-off. All three choices are \f$(B - A) \times (C - A)\f$ exactly.
 template <typename S>
-TriangleNormal<S> normalOf(const Vertices<S>& v, int a, int b, int c) {
-  const Vector3<S> eab = edge(v, a, b), eac = edge(v, a, c), ebc = edge(v, b, c);
-  const S lab = eab.squaredNorm(), lac = eac.squaredNorm(), lbc = ebc.squaredNorm();
+TriangleNormal<S> normalOf(const Geometry<S>& g, int a, int b, int c) {
+  const Vector3<S> eab = g.edge(a, b), eac = g.edge(a, c), ebc = g.edge(b, c);
+  const S lab = g.edge2(a, b), lac = g.edge2(a, c), lbc = g.edge2(b, c);
   if (lbc >= lab && lbc >= lac) return {eab.cross(eac), lab * lac};
   if (lac >= lab) return {eab.cross(ebc), lab * lbc};
   return {eac.cross(ebc), lac * lbc};
@@ -212,10 +243,10 @@ TriangleNormal<S> normalOf(const Vertices<S>& v, int a, int b, int c) {
 
 /// The vertex of the list nearest the origin (its w has the smallest rounding).
 template <typename S>
-int nearestOf(const Vertices<S>& v, std::initializer_list<int> ids) {
+int nearestOf(const Geometry<S>& g, std::initializer_list<int> ids) {
   int best = *ids.begin();
   for (int k : ids)
-    if (v[k].w.squaredNorm() < v[best].w.squaredNorm()) best = k;
+    if (g.w2[k] < g.w2[best]) best = k;
   return best;
 }
 
@@ -239,8 +270,9 @@ int nearestOf(const Vertices<S>& v, std::initializer_list<int> ids) {
 /// Each \f$C_k\f$ is the opposite edge crossed with p0 minus that edge's start, so it too
 /// multiplies one accurate edge by one rounded vector.
 template <typename S>
-Feature<S> triangle(const Vertices<S>& v, int a, int b, int c) {
-  const TriangleNormal<S> tn = normalOf(v, a, b, c);
+Feature<S> triangle(const Geometry<S>& g, int a, int b, int c, const TriangleNormal<S>* known = nullptr) {
+  const Vertices<S>& v = g.v;
+  const TriangleNormal<S> tn = known ? *known : normalOf(g, a, b, c);  // a tetrahedron passes its face's
   const Vector3<S>& n = tn.n;
   const S nn = n.squaredNorm();
   Feature<S> best;
@@ -251,18 +283,18 @@ Feature<S> triangle(const Vertices<S>& v, int a, int b, int c) {
   n.cwiseAbs().maxCoeff(&I);
   constexpr S safety2 = signSafety<S>() * signSafety<S>();
   if (n[I] * n[I] > safety2 * tn.scale2) {  // else degenerate: search every edge
-    const Vector3<S>& wo = v[nearestOf(v, {a, b, c})].w;
+    const Vector3<S>& wo = v[nearestOf(g, {a, b, c})].w;
     const Vector3<S> p0 = n * (wo.dot(n) / nn);
     const int x = (I + 1) % 3, y = (I + 2) % 3;  // cyclic, so the projected area is +n_I
     muMax = n[I];
     const std::array<int, 3> ids{a, b, c};
     for (int k = 0; k < 3; ++k) {
       const int from = ids[(k + 1) % 3], to = ids[(k + 2) % 3];
-      const Vector3<S> e = edge(v, from, to), d = p0 - v[from].w;
+      const Vector3<S> e = g.edge(from, to), d = p0 - v[from].w;
       C[k] = cross2(e, d, x, y);  // area (from, to, p0): vertex k replaced by p0
       // |C_k| above its round-off, eps |e| (|p0| + |w_from|) (compared squared, with
       // (a + b)^2 <= 2 (a^2 + b^2), to save the square roots).
-      trusted[k] = C[k] * C[k] > safety2 * e.squaredNorm() * S(2) * (p0.squaredNorm() + v[from].w.squaredNorm());
+      trusted[k] = C[k] * C[k] > safety2 * g.edge2(from, to) * S(2) * (p0.squaredNorm() + g.w2[from]);
     }
     if (sameSign(muMax, C[0]) && sameSign(muMax, C[1]) && sameSign(muMax, C[2])) {
       Feature<S> f;
@@ -284,7 +316,7 @@ Feature<S> triangle(const Vertices<S>& v, int a, int b, int c) {
   const std::array<int, 3> ids{a, b, c};
   for (int k = 0; k < 3; ++k) {
     if (trusted[k] && sameSign(muMax, C[k])) continue;
-    const Feature<S> f = segment(v, ids[(k + 1) % 3], ids[(k + 2) % 3]);
+    const Feature<S> f = segment(g, ids[(k + 1) % 3], ids[(k + 2) % 3]);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }
   return best;
@@ -298,21 +330,23 @@ Feature<S> triangle(const Vertices<S>& v, int a, int b, int c) {
 /// triangle test has). All positive: the origin is inside (distance 0). Otherwise search
 /// the faces whose coordinate is negative or not trusted.
 template <typename S>
-Feature<S> tetrahedron(const Vertices<S>& v) {
+Feature<S> tetrahedron(const Geometry<S>& g) {
+  const Vertices<S>& v = g.v;
   constexpr S safety2 = signSafety<S>() * signSafety<S>();
   std::array<S, 4> C{}, D{};
   std::array<bool, 4> trusted{};
+  std::array<TriangleNormal<S>, 4> normals;
   bool flat = false;  // a vertex within round-off of its opposite face: no sign is trusted
   for (int k = 0; k < 4; ++k) {
     const int f0 = (k + 1) % 4, f1 = (k + 2) % 4, f2 = (k + 3) % 4;
-    const TriangleNormal<S> tn = normalOf(v, f0, f1, f2);
-    const int o = nearestOf(v, {f0, f1, f2});
-    const Vector3<S> h = edge(v, o, k);
+    const TriangleNormal<S>& tn = normals[k] = normalOf(g, f0, f1, f2);
+    const int o = nearestOf(g, {f0, f1, f2});
+    const Vector3<S> h = g.edge(o, k);
     C[k] = -tn.n.dot(v[o].w);  // the origin's height over face k, times |n_k|
     D[k] = tn.n.dot(h);        // vertex k's height over face k, times |n_k|
     // Each above its round-off, eps |n_k| times the other factor's length (compared squared).
-    trusted[k] = C[k] * C[k] > safety2 * tn.scale2 * v[o].w.squaredNorm();
-    if (!(D[k] * D[k] > safety2 * tn.scale2 * h.squaredNorm())) flat = true;
+    trusted[k] = C[k] * C[k] > safety2 * tn.scale2 * g.w2[o];
+    if (!(D[k] * D[k] > safety2 * tn.scale2 * g.edge2(o, k))) flat = true;
   }
   Feature<S> best;
   bool inside = !flat;
@@ -332,7 +366,7 @@ Feature<S> tetrahedron(const Vertices<S>& v) {
   }
   for (int k = 0; k < 4; ++k) {
     if (!flat && trusted[k] && sameSign(C[k], D[k])) continue;  // the origin is on k's side of face k
-    const Feature<S> f = triangle(v, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4);
+    const Feature<S> f = triangle(g, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4, &normals[k]);
     if (f.distanceSquared < best.distanceSquared) best = f;
   }
   return best;
@@ -345,14 +379,14 @@ Feature<S> tetrahedron(const Vertices<S>& v) {
 /// dropped; the order of those kept is preserved.
 template <typename S>
 void reduceToClosestFeature(Simplex<S>& simplex) {
-  const detail::Vertices<S>& v = simplex.vertices;
+  if (simplex.size < 1 || simplex.size > 4) return;
+  const detail::Geometry<S> g(simplex.vertices, simplex.size);
   detail::Feature<S> f;
   switch (simplex.size) {
-    case 1: f = detail::vertexFeature(v, 0); break;
-    case 2: f = detail::segment(v, 0, 1); break;
-    case 3: f = detail::triangle(v, 0, 1, 2); break;
-    case 4: f = detail::tetrahedron(v); break;
-    default: return;
+    case 1: f = detail::vertexFeature(g, 0); break;
+    case 2: f = detail::segment(g, 0, 1); break;
+    case 3: f = detail::triangle(g, 0, 1, 2); break;
+    default: f = detail::tetrahedron(g); break;
   }
   int kept = 0;
   for (int k = 0; k < simplex.size; ++k) {
