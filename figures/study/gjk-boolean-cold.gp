@@ -14,8 +14,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [82.8739:5400.46]
+set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000)
+set xrange [81.5023:4325.25]
 set yrange [2e-05:3]
 set title 'box (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -39,8 +39,8 @@ set lmargin at screen 0.38
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('100' 100, '200' 200, '500' 500)
-set xrange [53.1402:779.657]
+set xtics ('50' 50, '100' 100, '200' 200, '500' 500)
+set xrange [37.2114:908.992]
 set yrange [2e-05:3]
 set title 'sphere (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -65,7 +65,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000)
-set xrange [78.8917:14319.9]
+set xrange [85.0862:14061.5]
 set yrange [2e-05:3]
 set title 'capsule (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -90,7 +90,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [177.694:4562.23]
+set xrange [178.579:4616.35]
 set yrange [2e-05:3]
 set title 'polytope12 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -115,7 +115,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [533.481:45205.3]
+set xrange [552.994:45115.9]
 set yrange [2e-05:3]
 set title 'polytope100 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -140,7 +140,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('10000' 10000, '100000' 100000)
-set xrange [1139.75:726909]
+set xrange [1153.42:730087]
 set yrange [2e-05:3]
 set title 'polytope1000 (256 queries)' offset 0,-0.6
 plot 'gjk-boolean-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \

@@ -14,8 +14,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('50' 50, '100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [41.2378:5578.79]
+set xtics ('50' 50, '100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000)
+set xrange [38.0963:3924.91]
 set yrange [2e-05:3]
 set title 'box (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -39,8 +39,8 @@ set lmargin at screen 0.38
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('50' 50, '100' 100, '200' 200)
-set xrange [32.7867:486.495]
+set xtics ('50' 50, '100' 100, '200' 200, '500' 500)
+set xrange [32.831:523.793]
 set yrange [2e-05:3]
 set title 'sphere (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -65,7 +65,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [45.6183:15903.7]
+set xrange [45.6183:15612.8]
 set yrange [2e-05:3]
 set title 'capsule (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -90,7 +90,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [53.5826:6863.54]
+set xrange [52.742:6961.32]
 set yrange [2e-05:3]
 set title 'polytope12 (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -115,7 +115,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('100' 100, '1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [56.2374:113852]
+set xrange [54.9543:116746]
 set yrange [2e-05:3]
 set title 'polytope100 (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -140,7 +140,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('100' 100, '1000' 1000, '10000' 10000, '100000' 100000, '1e+06' 1e+06)
-set xrange [62.9187:1.48927e+06]
+set xrange [61.1488:1.50242e+06]
 set yrange [2e-05:3]
 set title 'polytope1000 (4096 queries)' offset 0,-0.6
 plot 'gjk-boolean-warm.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \

@@ -15,7 +15,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('500' 500, '1000' 1000, '2000' 2000)
-set xrange [405.432:2256.46]
+set xrange [416.98:2320.73]
 set yrange [2e-19:10]
 set title 'box (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -36,7 +36,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('50' 50, '100' 100, '200' 200)
-set xrange [29.6895:425.062]
+set xrange [29.6895:392.126]
 set yrange [2e-19:10]
 set title 'sphere (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -57,7 +57,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [50.5296:32482.3]
+set xrange [51.3703:33127.1]
 set yrange [2e-19:10]
 set title 'capsule (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -78,7 +78,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '2000' 2000)
-set xrange [675.292:3758.38]
+set xrange [691.707:3849.74]
 set yrange [2e-19:10]
 set title 'polytope12 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -99,7 +99,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [1319.61:26022.6]
+set xrange [1355.05:25600.3]
 set yrange [2e-19:10]
 set title 'polytope100 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -120,7 +120,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('5000' 5000, '10000' 10000, '20000' 20000, '50000' 50000, '100000' 100000, '200000' 200000)
-set xrange [3251.2:326287]
+set xrange [3138.19:324585]
 set yrange [2e-19:10]
 set title 'polytope1000 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \

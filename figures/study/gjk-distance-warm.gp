@@ -14,8 +14,8 @@ set lmargin at screen 0.0466667
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('500' 500, '1000' 1000)
-set xrange [213.136:1958.83]
+set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
+set xrange [193.225:2002.51]
 set yrange [2e-19:10]
 set title 'box (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -35,8 +35,8 @@ set lmargin at screen 0.38
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('50' 50, '100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000)
-set xrange [31.0169:8631.05]
+set xtics ('100' 100, '1000' 1000, '10000' 10000)
+set xrange [31.4593:10245.5]
 set yrange [2e-19:10]
 set title 'sphere (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -57,7 +57,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000)
-set xrange [51.8128:14524]
+set xrange [52.742:16495.8]
 set yrange [2e-19:10]
 set title 'capsule (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -78,7 +78,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000)
-set xrange [251.719:4195.28]
+set xrange [257.471:4187.47]
 set yrange [2e-19:10]
 set title 'polytope12 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -99,7 +99,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [386.406:32009.4]
+set xrange [372.645:32589]
 set yrange [2e-19:10]
 set title 'polytope100 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -120,7 +120,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [718.742:500646]
+set xrange [689.052:501090]
 set yrange [2e-19:10]
 set title 'polytope1000 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
