@@ -11,11 +11,14 @@
 #include <gjkx/extrusion/sweeping_test.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/support_mapping/polytope.hpp>
 #include <gjkx/support_mapping/primitives.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 using namespace gjkx;
 
@@ -367,4 +370,55 @@ TEST_CASE("the extrusion test takes a rigid body and a deforming simplex togethe
   CHECK(extrusionTest(slow, box, 0.0, 1.0).status == ExtrusionStatus::NoCollision);
   const DeformingSimplex<double> fast({V(0, 3, 0)}, {V(0, 0, 0)});
   CHECK(extrusionTest(box, fast, 0.0, 1.0).status == ExtrusionStatus::Undecided);
+}
+
+// What the time-of-impact solver relies on when it runs many tests on [t_x, t1] (§5):
+// - `extrusionTestPlaced` on the bodies placed at both ends is `extrusionTest`;
+// - each stored vector's hints are where its supports at t1 are: a search started there
+//   does not move, and gives the stored SD(t1);
+// - an ExtrusionCache carried from one test to the next (GJK's warm start, the hints at
+//   t1) changes no verdict and no distance beyond GJK's tolerance.
+// On two polytopes turning and closing in (a screw motion each), tested on [t, 1] for t
+// stepping towards the contact, as the solver's restarts do.
+TEST_CASE("tests on [t, t1] with the bodies placed once, hints kept per vector and a cache carried along",
+          "[extrusion][cache][hints]") {
+  using V = Vector3<double>;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal(0, 1);
+  auto cloud = [&](int n, double size) {
+    std::vector<V> points;
+    for (int k = 0; k < n; ++k) points.push_back(V(normal(rng), normal(rng), normal(rng)).normalized() * size);
+    return Polytope<double>::hull(points);
+  };
+  const auto P = moving(cloud(200, 0.5), Motion<double>::screw(Pose<double>::identity(), V(0, 0, 0), V(0, 0, 1.5)));
+  const auto Q = moving(cloud(60, 0.4), Motion<double>::screw(Pose<double>::translate(V(2.5, 0.2, 0.1)), V(-3, 0, 0),
+                                                              V(1, 0.5, 0)));
+  const double t1 = 1;
+  const auto P1 = P.at(t1);
+  const auto Q1 = Q.at(t1);
+  ExtrusionSettings<double> settings;
+  ExtrusionCache<double> cache;
+  int undecided = 0;
+  for (double t = 0; t < 0.55; t += 0.05) {
+    INFO("interval [" << t << ", 1]");
+    const auto cold = extrusionTest(P, Q, t, t1, settings);
+    const auto placed = extrusionTestPlaced(P.at(t), Q.at(t), P1, Q1, 0.0, settings);
+    CHECK(placed.status == cold.status);
+    CHECK(placed.distanceAtStart == cold.distanceAtStart);
+    CHECK(placed.separating.count == cold.separating.count);
+    const auto warm = extrusionTestPlaced(P.at(t), Q.at(t), P1, Q1, 0.0, settings, &cache);
+    CHECK(warm.status == cold.status);
+    CHECK(warm.distanceAtStart == Approx(cold.distanceAtStart).epsilon(1e-9));
+    undecided += warm.status == ExtrusionStatus::Undecided;
+    for (const auto* r : {&cold, &warm}) {
+      for (int k = 0; k < r->separating.count; ++k) {
+        SupportHint hintP = r->separating.hintP[k], hintQ = r->separating.hintQ[k];
+        const SupportHint storedP = hintP, storedQ = hintQ;
+        CHECK(supportingDistance(P1, Q1, r->separating.vectors[k], hintP, hintQ) == r->separating.sdEnd[k]);
+        CHECK(hintP == storedP);
+        CHECK(hintQ == storedQ);
+      }
+    }
+  }
+  CHECK(undecided >= 5);  // the intervals do reach the contact
 }

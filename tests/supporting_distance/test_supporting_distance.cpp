@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace gjkx;
@@ -112,4 +113,51 @@ TEST_CASE("a warm-started static test finds the remembered separating vector at 
   const auto second = intersect(P, place(unit, Pose<double>::translate({1.49, 0.31, 0.01})), {}, &cache);
   REQUIRE(second.status == IntersectionStatus::Disjoint);
   CHECK(second.iterations == 1);
+}
+
+// The hill-climbing hints (§2.1) change where each support search starts, never its end:
+// from any starting vertex the supporting distance is the one without hints, and the
+// hints come back on vertices that support the polytope along s (held to a linear scan).
+// The time-of-impact solver keeps such hints per stored separating vector (§5).
+TEMPLATE_TEST_CASE("SD with hill-climbing hints: the same value from any start, the hints on supporting vertices",
+                   "[sd][hints]", float, double) {
+  using S = TestType;
+  using V = Vector3<S>;
+  std::mt19937 rng(17);
+  std::normal_distribution<double> normal(0, 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto unit = [&] { return V(S(normal(rng)), S(normal(rng)), S(normal(rng))).normalized(); };
+  auto cloud = [&](int n, const V& scale) {
+    std::vector<V> points;
+    for (int k = 0; k < n; ++k) points.push_back(unit().cwiseProduct(scale));
+    return Polytope<S>::hull(points);
+  };
+  const auto P = place(cloud(300, V(1, S(0.6), S(0.4))), Pose<S>::fromAxisAngle(V(1, 2, 3), S(0.7), V(0, 0, 0)));
+  const auto Q = place(cloud(120, V(S(0.5), S(0.5), S(0.8))), Pose<S>::fromAxisAngle(V(-1, 0, 2), S(2.1), V(3, 1, 0)));
+  const S roundoff = std::is_same_v<S, float> ? S(1e-5) : S(1e-13);
+  // The projection of the placed polytope's vertex v on s.
+  auto along = [](const auto& X, int v, const V& s) { return s.dot(X.worldFromBody(X.shape.vertex(v))); };
+  SupportHint hintP = 0, hintQ = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const V s = unit();
+    if (trial % 3 == 0) {  // a cold start from any vertex, else the hints of the last direction
+      hintP = int(u(rng) * P.shape.vertexCount());
+      hintQ = int(u(rng) * Q.shape.vertexCount());
+    }
+    const S plain = supportingDistance(P, Q, s);
+    const S hinted = supportingDistance(P, Q, s, hintP, hintQ);
+    INFO("trial " << trial);
+    CHECK(hinted == Approx(plain).margin(roundoff));
+    // The hints end on supporting vertices: P's along s, Q's along -s.
+    const int scanP = P.shape.supportIndexLinearScan(P.worldFromBody.toBodyDirection(s));
+    const int scanQ = Q.shape.supportIndexLinearScan(Q.worldFromBody.toBodyDirection(V(-s)));
+    CHECK(along(P, hintP, s) == Approx(along(P, scanP, s)).margin(roundoff));
+    CHECK(along(Q, hintQ, V(-s)) == Approx(along(Q, scanQ, V(-s))).margin(roundoff));
+  }
+  // A zero direction separates nothing, and leaves the hints alone.
+  hintP = 7;
+  hintQ = 11;
+  CHECK(supportingDistance(P, Q, V::Zero(), hintP, hintQ) == -std::numeric_limits<S>::infinity());
+  CHECK(hintP == 7);
+  CHECK(hintQ == 11);
 }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace gjkx {
@@ -81,7 +82,9 @@ struct NoExtrusionVisitor {
 /// The separating vectors found at \f$t_0\f$ (§5: "a constant number, generally less than
 /// seven"), kept for the time-of-impact solver with their supporting distances at both
 /// ends. Holds up to 16; past that, a new vector replaces the one with the smallest
-/// \f$SD(t_1)\f$.
+/// \f$SD(t_1)\f$. Each vector also keeps the hill-climbing hints of its last supports (speed:
+/// the solver evaluates SD along it at many times, and a climb started where the last
+/// one ended takes a step or two).
 template <typename S>
 struct SeparatingVectors {
   /// Capacity.
@@ -92,10 +95,14 @@ struct SeparatingVectors {
   std::array<S, kCapacity> sdStart{};
   /// \f$SD(t_1, \vec{s}_k)\f$ of each.
   std::array<S, kCapacity> sdEnd{};
+  /// Hill-climbing hint of \f$S_P(\vec{s}_k)\f$ at the last time SD was evaluated along \f$\vec{s}_k\f$.
+  std::array<SupportHint, kCapacity> hintP{};
+  /// Hill-climbing hint of \f$S_Q(-\vec{s}_k)\f$, likewise.
+  std::array<SupportHint, kCapacity> hintQ{};
   /// How many are held.
   int count = 0;
-  /// Adds a vector (once), or replaces the weakest when full.
-  void add(const Vector3<S>& s, S sd0, S sd1) {
+  /// Adds a vector (once), or replaces the weakest when full; `hp`, `hq` are its hints.
+  void add(const Vector3<S>& s, S sd0, S sd1, SupportHint hp = 0, SupportHint hq = 0) {
     for (int k = 0; k < count; ++k)
       if (vectors[k] == s) return;  // GJK may repeat a direction: keep it once
     int slot = count;
@@ -110,6 +117,8 @@ struct SeparatingVectors {
     vectors[slot] = s;
     sdStart[slot] = sd0;
     sdEnd[slot] = sd1;
+    hintP[slot] = hp;
+    hintQ[slot] = hq;
   }
 };
 
@@ -142,7 +151,10 @@ struct ExtrusionResult {
 };
 
 /// What one interval leaves for the next (temporal coherence): the separating vector
-/// that decided it, tried first next time, and GJK's own warm start.
+/// that decided it, tried first next time, GJK's own warm start, and where the last
+/// support searches at the far end ended. The time-of-impact solver also passes one from
+/// each complete test to the next within a query (§5's restarts at \f$t_x\f$): the bodies
+/// have moved little since the last test, so GJK starts from the last simplex.
 template <typename S>
 struct ExtrusionCache {
   /// The last vector that separated at both ends.
@@ -151,6 +163,10 @@ struct ExtrusionCache {
   bool valid = false;
   /// GJK's warm start at \f$t_0\f$.
   GjkCache<S> gjk;
+  /// Hill-climbing hint of the last support of P searched at the far end \f$t_1\f$.
+  SupportHint endHintP = 0;
+  /// Hill-climbing hint of the last support of Q searched at the far end \f$t_1\f$.
+  SupportHint endHintQ = 0;
 };
 
 /// \f$SD(P(t), Q(t), \vec{s})\f$ of two moving bodies at time t, for a unit s.
@@ -160,35 +176,34 @@ typename MovingP::Scalar supportingDistanceAt(const MovingP& P, const MovingQ& Q
   return supportingDistance(P.at(t), Q.at(t), s);
 }
 
-/// The separating hyperspace test (§3) of two moving bodies over \f$[t_0, t_1]\f$.
-///
-/// "Assuming by induction that \f$P(t_0)\f$ and \f$Q(t_0)\f$ do not intersect, we execute the
-/// GJK algorithm at \f$t_0\f$. At each iteration, we compute \f$SD(P(t_0), Q(t_0), \vec{s}_i)\f$. If
-/// this distance is positive, \f$\vec{s}_i\f$ is a separating vector at \f$t_0\f$, so we compute
-/// \f$SD(P(t_1), Q(t_1), \vec{s}_i)\f$. If this distance is also positive, then \f$\vec{s}_i\f$ is a
-/// separating vector for both \f$t_0\f$ and \f$t_1\f$ and their separating spaces intersect, so
-/// the test returns non-collision for the entire time interval."
-///
-/// "Positive" here means above the collision tolerance (plus the certified margin).
-/// The bodies are any types with `at(t)` (a static support mapping) and
-/// `accelerationBound()`: `Moving<Shape>` and `DeformingSimplex`.
-template <typename MovingP, typename MovingQ, typename Visitor = NoExtrusionVisitor>
-ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
-                                                        typename MovingP::Scalar t1,
-                                                        const ExtrusionSettings<typename MovingP::Scalar>& settings = {},
-                                                        ExtrusionCache<typename MovingP::Scalar>* cache = nullptr,
-                                                        Visitor&& visit = {}) {
-  using S = typename MovingP::Scalar;
+/// The separating hyperspace test (§3) on the bodies already placed at both ends of the
+/// interval: `P0`, `Q0` at \f$t_0\f$ and `P1`, `Q1` at \f$t_1\f$ (static support mappings, e.g.
+/// `P.at(t0)`), with the certified `margin` over it (0 for the paper's variant). This is
+/// `extrusionTest` without the poses, for a caller that has them already: the
+/// time-of-impact solver tests many intervals \f$[t_x, t_1]\f$ with the same far end, and
+/// places the bodies at \f$t_x\f$ once for both its approximate SD and the test (speed).
+template <typename PlacedP0, typename PlacedQ0, typename PlacedP1, typename PlacedQ1,
+          typename Visitor = NoExtrusionVisitor>
+ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P0, const PlacedQ0& Q0, const PlacedP1& P1,
+                                                               const PlacedQ1& Q1, typename PlacedP0::Scalar margin,
+                                                               const ExtrusionSettings<typename PlacedP0::Scalar>& settings,
+                                                               ExtrusionCache<typename PlacedP0::Scalar>* cache = nullptr,
+                                                               Visitor&& visit = {}) {
+  using S = typename PlacedP0::Scalar;
   ExtrusionResult<S> result;
-  result.margin = extrusionMargin(settings.variant, t1 - t0, S(P.accelerationBound()), S(Q.accelerationBound()));
+  result.margin = margin;
   const S tol = settings.collisionTolerance;
   const S threshold = tol + result.margin;  // what both ends must exceed
-  // One declaration per body: P and Q may be different kinds of body (a rigid
-  // Moving<Shape> against a DeformingSimplex) whose at(t) return different types.
-  const auto P0 = P.at(t0);
-  const auto Q0 = Q.at(t0);
-  const auto P1 = P.at(t1);
-  const auto Q1 = Q.at(t1);
+
+  // The supports at t1 are searched along GJK's successive directions, which turn little
+  // from one iteration to the next: each search starts where the last one ended (speed;
+  // the hints change where a climb starts, never where it ends).
+  SupportHint endHintP = cache ? cache->endHintP : 0, endHintQ = cache ? cache->endHintQ : 0;
+  auto keepEndHints = [&] {
+    if (!cache) return;
+    cache->endHintP = endHintP;
+    cache->endHintQ = endHintQ;
+  };
 
   // Temporal coherence: the vector that separated the last interval is tried first.
   if (cache && cache->valid) {
@@ -199,7 +214,7 @@ ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const 
     ++result.sdEvaluations;
     step.separatesStart = step.sdStart > tol;
     if (step.sdStart > threshold) {
-      step.sdEnd = supportingDistance(P1, Q1, step.s);
+      step.sdEnd = supportingDistance(P1, Q1, step.s, endHintP, endHintQ);
       ++result.sdEvaluations;
       step.separatesEnd = step.sdEnd > threshold;
     }
@@ -208,6 +223,7 @@ ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const 
       result.status = ExtrusionStatus::NoCollision;
       result.separatingVector = step.s;
       result.usedRememberedVector = true;
+      keepEndHints();
       return result;
     }
   }
@@ -222,10 +238,10 @@ ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const 
     step.sdStart = it.supportingDistance;
     step.separatesStart = step.sdStart > tol;
     if (step.separatesStart) {
-      step.sdEnd = supportingDistance(P1, Q1, step.s);
+      step.sdEnd = supportingDistance(P1, Q1, step.s, endHintP, endHintQ);
       ++result.sdEvaluations;
       step.separatesEnd = step.sdStart > threshold && step.sdEnd > threshold;
-      result.separating.add(step.s, step.sdStart, step.sdEnd);
+      result.separating.add(step.s, step.sdStart, step.sdEnd, endHintP, endHintQ);
       result.maxSdEnd = std::max(result.maxSdEnd, step.sdEnd);
       if (step.separatesEnd) {
         found = true;
@@ -257,7 +273,34 @@ ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const 
     cache->valid = found;
     if (found) cache->separatingVector = result.separatingVector;
   }
+  keepEndHints();
   return result;
+}
+
+/// The separating hyperspace test (§3) of two moving bodies over \f$[t_0, t_1]\f$.
+///
+/// "Assuming by induction that \f$P(t_0)\f$ and \f$Q(t_0)\f$ do not intersect, we execute the
+/// GJK algorithm at \f$t_0\f$. At each iteration, we compute \f$SD(P(t_0), Q(t_0), \vec{s}_i)\f$. If
+/// this distance is positive, \f$\vec{s}_i\f$ is a separating vector at \f$t_0\f$, so we compute
+/// \f$SD(P(t_1), Q(t_1), \vec{s}_i)\f$. If this distance is also positive, then \f$\vec{s}_i\f$ is a
+/// separating vector for both \f$t_0\f$ and \f$t_1\f$ and their separating spaces intersect, so
+/// the test returns non-collision for the entire time interval."
+///
+/// "Positive" here means above the collision tolerance (plus the certified margin).
+/// The bodies are any types with `at(t)` (a static support mapping) and
+/// `accelerationBound()`: `Moving<Shape>` and `DeformingSimplex`.
+template <typename MovingP, typename MovingQ, typename Visitor = NoExtrusionVisitor>
+ExtrusionResult<typename MovingP::Scalar> extrusionTest(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
+                                                        typename MovingP::Scalar t1,
+                                                        const ExtrusionSettings<typename MovingP::Scalar>& settings = {},
+                                                        ExtrusionCache<typename MovingP::Scalar>* cache = nullptr,
+                                                        Visitor&& visit = {}) {
+  using S = typename MovingP::Scalar;
+  const S margin = extrusionMargin(settings.variant, t1 - t0, S(P.accelerationBound()), S(Q.accelerationBound()));
+  // One declaration per body: P and Q may be different kinds of body (a rigid
+  // Moving<Shape> against a DeformingSimplex) whose at(t) return different types.
+  return extrusionTestPlaced(P.at(t0), Q.at(t0), P.at(t1), Q.at(t1), margin, settings, cache,
+                             std::forward<Visitor>(visit));
 }
 
 }  // namespace gjkx
