@@ -44,6 +44,14 @@
 /// most what the bodies move in one time tolerance, plus GJK's own uncertainty). Every
 /// reported time is one at which the bodies do not interpenetrate, and no later than the
 /// first time they come within the tolerance (plus the time tolerance).
+///
+/// Three things beyond the paper make a query cheaper without changing what it proves:
+/// each complete test after the first starts GJK from the last one's simplex (an
+/// `ExtrusionCache`); each stored vector keeps where its support searches ended (its
+/// hill-climbing hints); and after a restart the bracket's far end is the nearest known
+/// point where the new vectors are below the tolerance (the last bracket's, or where the
+/// distances of the last two complete tests extrapolate to it), so that Brent does not
+/// creep towards a far t1 one restart at a time.
 #pragma once
 
 #include <gjkx/brent/root_finder.hpp>
@@ -51,6 +59,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace gjkx {
@@ -202,8 +211,21 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   extrusion.gjk = settings.gjk;
 
   ToiResult<S> result;
-  auto completeTest = [&](S ta) {
-    const ExtrusionResult<S> test = extrusionTest(P, Q, ta, t1, extrusion);
+  // Every complete test after the first starts where the last one ended (speed): GJK
+  // from the last simplex, its supports re-asked at the new time (GjkCache), and the
+  // searches at t1 from the last vertices found there. The restarts of §5 come at times
+  // ever closer to the contact, where the closest features change little, so the warm
+  // GJK needs a couple of iterations where a cold one needs five or more. The verdicts
+  // are those of cold tests: GJK converges to the same tolerance from either start.
+  ExtrusionCache<S> cache;
+  // Every test ends at t1, where the bodies are placed once. A test at ta takes the bodies
+  // placed at ta from its caller, who has usually just placed them there to evaluate the
+  // approximate maximum SD (speed: a pose under rotation costs a sine and a cosine).
+  const auto P1 = P.at(t1);
+  const auto Q1 = Q.at(t1);
+  auto completeTest = [&](const auto& Pa, const auto& Qa, S ta) {
+    const S margin = extrusionMargin(settings.variant, t1 - ta, S(P.accelerationBound()), S(Q.accelerationBound()));
+    ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1, Q1, margin, extrusion, &cache);
     ++result.gjkRuns;
     result.sdEvaluations += test.sdEvaluations;
     if (trace) trace->intervals.push_back({ta, test.status, test.distanceAtStart, test.separating});
@@ -212,7 +234,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
 
   // The first test over the whole interval.
   S ta = t0;
-  ExtrusionResult<S> test = completeTest(ta);
+  ExtrusionResult<S> test = completeTest(P.at(t0), Q.at(t0), ta);
   switch (test.status) {
     case ExtrusionStatus::NoCollision:
       result.status = ToiStatus::NoCollision;
@@ -246,25 +268,26 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
 
   // Brent on F(t) over [ta, t1], restarted on [tx, t1] after each complete test.
   const S timeTolerance = settings.timeTolerance * (t1 - t0);
-  SeparatingVectors<S> vectors = test.separating;
+  ExtrusionResult<S>& lastTest = test;           // the complete test at ta
+  SeparatingVectors<S>& vectors = test.separating;  // its vectors (their hints change as they are used)
   S distanceAtTa = test.distanceAtStart;
-  ExtrusionResult<S> lastTest = test;  // the complete test at ta
   // The approximate maximum supporting distance at t from the stored vectors (§5). The
   // certified variant counts a vector only as far as it separates at both ta and t, less
   // the margin over [ta, t]: positive then proves [ta, t] free of contact.
   const bool certified = settings.variant == ExtrusionVariant::Certified;
   auto marginOver = [&](S duration) { return certified ? duration * duration / S(8) * accelerationBound : S(0); };
-  auto approximateMaxSd = [&](S t) {
+  // Each vector's support searches start where its last ones ended (its hints): the
+  // bodies have moved little since, and the climbs are short (speed).
+  auto approximateMaxSdOf = [&](const auto& Pt, const auto& Qt, S t) {
     S best = -std::numeric_limits<S>::infinity();
-    const auto Pt = P.at(t);
-    const auto Qt = Q.at(t);
     for (int k = 0; k < vectors.count; ++k) {
-      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k]);
+      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k], vectors.hintP[k], vectors.hintQ[k]);
       best = std::max(best, certified ? std::min(sd, vectors.sdStart[k]) : sd);
     }
     result.sdEvaluations += vectors.count;
     return best - marginOver(t - ta);
   };
+  auto approximateMaxSd = [&](S t) { return approximateMaxSdOf(P.at(t), Q.at(t), t); };
   // The same at t1, from the values the complete test stored.
   auto approximateMaxSdAtEnd = [&] {
     S best = -std::numeric_limits<S>::infinity();
@@ -273,7 +296,10 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
     return best - marginOver(t1 - ta);
   };
 
-  S previousHigh = t1;  // the far end of the last Brent bracket, where F was negative
+  S previousHigh = t1;      // the far end of the last Brent bracket, where F was negative
+  S taBefore = t0;          // the complete test before the one at ta...
+  S distanceBefore = S(0);  // ...and its distance
+  bool creeping = false;    // the last restart came at an iterate where F was more than tol above 0
   for (;;) {
     // No stored vector separates at ta by the tolerance (GJK's own gap can leave the
     // distance just above tol with every SD just below it): nothing beyond ta can be
@@ -284,18 +310,30 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       return result;
     }
     // F(ta) = exact distance - tol > 0; F(t1) = approximate max SD at t1 - margin - tol <= 0.
-    // After a restart, if the new vectors are still below the tolerance at the last
-    // bracket's far end, bracket [ta, that end] instead of [ta, t1]: Brent's history is
-    // lost on a restart, and a first secant towards t1 would creep like regula falsi.
+    // Brent's history is lost on a restart, and a first secant towards t1 creeps like
+    // regula falsi where F bends away from the chord (accelerating or turning bodies:
+    // each secant lands short, F is above the tolerance there, and every restart costs a
+    // complete test). So the bracket's far end is the nearest of these where the new
+    // vectors are below the tolerance:
+    // - the last bracket's far end;
+    // - after a restart at an iterate where F was well above zero (the secant landed
+    //   short: the creep above), where the exact distances of the last two complete tests
+    //   extrapolate to the tolerance (a secant on the distance). The distance bends
+    //   towards contact there, so this lies past the contact, where F < 0. (Where the
+    //   restart came at F's root, as under linear motion, it would lie short: not tried.)
     const S fLow = distanceAtTa - tol;
     S high = t1, fHigh = std::min(approximateMaxSdAtEnd() - tol, S(0));
-    if (previousHigh < t1 && previousHigh > ta) {
-      const S fPrevious = approximateMaxSd(previousHigh) - tol;
-      if (fPrevious < S(0)) {
-        high = previousHigh;
-        fHigh = fPrevious;
+    auto tryHigh = [&](S t) {
+      if (!(t > ta && t < high)) return;
+      const S f = approximateMaxSd(t) - tol;
+      if (f < S(0)) {
+        high = t;
+        fHigh = f;
       }
-    }
+    };
+    tryHigh(previousHigh);
+    if (creeping && distanceBefore > distanceAtTa)
+      tryHigh(ta + (distanceAtTa - tol) * ((ta - taBefore) / (distanceBefore - distanceAtTa)));
     BrentStepper<S> brent(ta, fLow, high, fHigh, timeTolerance);
     bool restarted = false;
     while (!restarted) {
@@ -308,11 +346,15 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
         // where the distance exceeds tol by at most what the bodies move in one time tolerance.
         result.status = ToiStatus::Hit;
         const S tb = brent.root() == ta ? brent.counterpart() : brent.root();
-        if (tb > ta && vectors.count > 0 && approximateMaxSd(tb) > S(0)) {
-          const ExtrusionResult<S> atEnd = completeTest(tb);
-          if (atEnd.status == ExtrusionStatus::CollidingAtStart) {
-            detail::takeContact(result, tb, atEnd);
-            return result;
+        if (tb > ta && vectors.count > 0) {
+          const auto Pb = P.at(tb);
+          const auto Qb = Q.at(tb);
+          if (approximateMaxSdOf(Pb, Qb, tb) > S(0)) {
+            const ExtrusionResult<S> atEnd = completeTest(Pb, Qb, tb);
+            if (atEnd.status == ExtrusionStatus::CollidingAtStart) {
+              detail::takeContact(result, tb, atEnd);
+              return result;
+            }
           }
         }
         detail::takeContact(result, ta, lastTest);
@@ -325,7 +367,9 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       }
       const S tx = brent.next();
       ++result.brentIterations;
-      const S approx = vectors.count > 0 ? approximateMaxSd(tx) : S(0);
+      const auto Px = P.at(tx);
+      const auto Qx = Q.at(tx);
+      const S approx = vectors.count > 0 ? approximateMaxSdOf(Px, Qx, tx) : S(0);
       // "Positive" means at least the tolerance (F(tx) >= 0), not merely above 0: only then
       // are the bodies proven no closer than the tolerance on all of [ta, tx] (see the
       // file comment). Between 0 and tol, Brent goes on with F(tx) < 0.
@@ -338,7 +382,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       }
       // At least the tolerance: [ta, tx] is free of contact; the complete test on [tx, t1] decides.
       ++result.restarts;
-      const ExtrusionResult<S> next = completeTest(tx);
+      ExtrusionResult<S> next = completeTest(Px, Qx, tx);
       switch (next.status) {
         case ExtrusionStatus::NoCollision:
           result.status = ToiStatus::PhotoFinish;
@@ -356,10 +400,12 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
           return result;
         case ExtrusionStatus::Undecided:
           previousHigh = std::max(brent.root(), brent.counterpart());
+          taBefore = ta;
+          distanceBefore = distanceAtTa;
+          creeping = approx - tol > tol;
           ta = tx;
-          vectors = next.separating;
           distanceAtTa = next.distanceAtStart;
-          lastTest = next;
+          lastTest = std::move(next);  // and with it `vectors`
           restarted = true;
           break;
       }
