@@ -1,0 +1,169 @@
+// toi_profile: one method of the time-of-impact study run once per query, without timing
+// loops, so that an instruction count under callgrind is repeatable and per query.
+//
+//   toi_profile [--method ours|certified|fcl_ca|bullet] [--workload NAME]... [--queries N] [--repeat N] [--tol T]
+//
+// Builds the quick workloads of workloads.hpp (40 queries each unless --queries), then runs
+// the chosen method `--repeat` times (default 1) on every query of the chosen workloads
+// (default: every 3D workload), and prints per workload: queries, hits reported, misses and
+// false alarms against the reference, and for ours the mean GJK runs, Brent iterations,
+// restarts and supporting distances per query. Under valgrind the counting is switched on
+// only around the method's calls (callgrind client requests, when the header is there):
+//
+//   valgrind --tool=callgrind --instr-atstart=no build/chapters/07_study/toi_profile --workload linear
+//   callgrind_annotate --inclusive=yes callgrind.out.<pid>
+//
+// The total instruction count divided by the "calls" line (queries x repeat) is the
+// instruction count per query; the same command with --method fcl_ca gives the peer's.
+#include "toi_comparisons.hpp"
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define GJKX_PROFILE_START() CALLGRIND_START_INSTRUMENTATION
+#define GJKX_PROFILE_STOP() CALLGRIND_STOP_INSTRUMENTATION
+#else
+#define GJKX_PROFILE_START() ((void)0)
+#define GJKX_PROFILE_STOP() ((void)0)
+#endif
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace gjkx;
+namespace study = gjkx::toistudy::detail;
+using namespace gjkx::toistudy;
+
+namespace {
+
+struct Options {
+  std::string method = "ours";
+  std::vector<std::string> workloads;
+  int queries = 40;
+  int repeat = 1;
+  double tol = 1e-7;
+};
+
+[[noreturn]] void usage(const char* program, bool ok) {
+  std::fprintf(ok ? stdout : stderr,
+               "usage: %s [--method ours|certified|fcl_ca|bullet] [--workload NAME]... [--queries N] [--repeat N] [--tol T]\n"
+               "  runs one time-of-impact method once per query (no timing), for callgrind\n",
+               program);
+  std::exit(ok ? 0 : 2);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool value = i + 1 < argc;
+    if (arg == "--method" && value) {
+      o.method = argv[++i];
+    } else if (arg == "--workload" && value) {
+      o.workloads.push_back(argv[++i]);
+    } else if (arg == "--queries" && value) {
+      o.queries = std::atoi(argv[++i]);
+    } else if (arg == "--repeat" && value) {
+      o.repeat = std::atoi(argv[++i]);
+    } else if (arg == "--tol" && value) {
+      o.tol = std::atof(argv[++i]);
+    } else {
+      usage(argv[0], arg == "--help" || arg == "-h");
+    }
+  }
+  if (o.queries < 1 || o.repeat < 1 || !(o.tol > 0)) usage(argv[0], false);
+  if (o.method != "ours" && o.method != "certified" && o.method != "fcl_ca" && o.method != "bullet") usage(argv[0], false);
+  return o;
+}
+
+// Counters of ours over a workload.
+struct Counts {
+  long long gjkRuns = 0, brentIterations = 0, restarts = 0, sdEvaluations = 0;
+};
+
+// One run of ours (double), keeping the solver's own counters.
+study::Outcome runOurs(const study::Prepared<double>& p, const Options& o, Counts& counts) {
+  return std::visit(
+      [&](const auto& a, const auto& b) {
+        const auto P = moving(a, p.mp);
+        const auto Q = moving(b, p.mq);
+        ToiSettings<double> settings;
+        settings.collisionTolerance = o.tol;
+        settings.timeTolerance = std::min(settings.timeTolerance, o.tol);
+        settings.variant = o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper;
+        ToiResult<double> r;
+        GJKX_PROFILE_START();
+        for (int k = 0; k < o.repeat; ++k) r = timeOfImpact(P, Q, 0.0, 1.0, settings);
+        GJKX_PROFILE_STOP();
+        counts.gjkRuns += r.gjkRuns;
+        counts.brentIterations += r.brentIterations;
+        counts.restarts += r.restarts;
+        counts.sdEvaluations += r.sdEvaluations;
+        return study::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
+      },
+      p.P, p.Q);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  WorkloadOptions wo;
+  wo.queriesPerWorkload = o.queries;
+  const std::vector<ToiWorkload> workloads = makeWorkloads(wo);
+  bool any = false;
+  for (const ToiWorkload& w : workloads) {
+    if (w.planar) continue;  // FCL and Bullet run on the 3D workloads only
+    if (!o.workloads.empty() && std::find(o.workloads.begin(), o.workloads.end(), w.name) == o.workloads.end()) continue;
+    any = true;
+    int hits = 0, misses = 0, falseAlarms = 0;
+    Counts counts;
+    for (const ToiQuery& q : w.queries) {
+      study::Outcome out;
+      if (o.method == "ours" || o.method == "certified") {
+        const study::Prepared<double> p(q);
+        out = runOurs(p, o, counts);
+      } else if (o.method == "fcl_ca") {
+#if GJKX_HAVE_FCL
+        const peers::FclQuery fcl(q);
+        peers::PeerOutcome r;
+        GJKX_PROFILE_START();
+        for (int k = 0; k < o.repeat; ++k) r = fcl.run(true, 1e-4, fcl::GST_LIBCCD);
+        GJKX_PROFILE_STOP();
+        out = study::Outcome{r.hit, r.time};
+#else
+        std::fprintf(stderr, "toi_profile: FCL was not found at build time\n");
+        return 1;
+#endif
+      } else {
+#if GJKX_HAVE_BULLET
+        const peers::BulletQuery bullet(q);
+        peers::PeerOutcome r;
+        GJKX_PROFILE_START();
+        for (int k = 0; k < o.repeat; ++k) r = bullet.run();
+        GJKX_PROFILE_STOP();
+        out = study::Outcome{r.hit, r.time};
+#else
+        std::fprintf(stderr, "toi_profile: Bullet was not found at build time\n");
+        return 1;
+#endif
+      }
+      hits += out.hit;
+      misses += q.refHit && !out.hit;
+      falseAlarms += q.clearMiss && out.hit;
+    }
+    const double n = double(w.queries.size());
+    std::printf("PROFILE method=%s workload=%s queries=%zu repeat=%d calls=%lld hits=%d misses=%d false_alarms=%d", o.method.c_str(),
+                w.name.c_str(), w.queries.size(), o.repeat, (long long)w.queries.size() * o.repeat, hits, misses, falseAlarms);
+    if (o.method == "ours" || o.method == "certified")
+      std::printf(" gjk_runs=%.2f brent_iterations=%.2f restarts=%.2f sd_evaluations=%.2f", counts.gjkRuns / n,
+                  counts.brentIterations / n, counts.restarts / n, counts.sdEvaluations / n);
+    std::printf("\n");
+  }
+  if (!any) {
+    std::fprintf(stderr, "toi_profile: no 3D workload matched\n");
+    return 2;
+  }
+  return 0;
+}
