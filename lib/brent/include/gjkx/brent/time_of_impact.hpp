@@ -204,7 +204,8 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
   const S tol = settings.collisionTolerance;
-  const S accelerationBound = S(P.accelerationBound()) + S(Q.accelerationBound());
+  const S accelerationP = S(P.accelerationBound()), accelerationQ = S(Q.accelerationBound());
+  const S accelerationBound = accelerationP + accelerationQ;
   ExtrusionSettings<S> extrusion;
   extrusion.collisionTolerance = tol;
   extrusion.variant = settings.variant;
@@ -224,7 +225,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   const auto P1 = P.at(t1);
   const auto Q1 = Q.at(t1);
   auto completeTest = [&](const auto& Pa, const auto& Qa, S ta) {
-    const S margin = extrusionMargin(settings.variant, t1 - ta, S(P.accelerationBound()), S(Q.accelerationBound()));
+    const S margin = extrusionMargin(settings.variant, t1 - ta, accelerationP, accelerationQ);
     ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1, Q1, margin, extrusion, &cache);
     ++result.gjkRuns;
     result.sdEvaluations += test.sdEvaluations;
@@ -252,7 +253,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       // per-vertex linear motion: minus nothing). If that stays positive, the bodies never
       // touch: they are moving apart.
       detail::takeContact(result, t0, test);
-      const S margin = extrusionMargin(settings.variant, t1 - t0, S(P.accelerationBound()), S(Q.accelerationBound()));
+      const S margin = extrusionMargin(settings.variant, t1 - t0, accelerationP, accelerationQ);
       bool apart = false;
       if (result.distance > S(0) && result.normal.squaredNorm() > S(0)) {
         const S sd0 = supportingDistanceAt(P, Q, result.normal, t0);
