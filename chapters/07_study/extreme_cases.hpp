@@ -68,6 +68,8 @@ using toistudy::LD;
 using toistudy::MotionSpec;
 using toistudy::ShapeKind;
 using toistudy::ShapeSpec;
+using toistudy::AnyShape;
+using toistudy::ourShape;
 using toistudy::ToiQuery;
 
 /// What a correct method must say about a time-of-impact case (see the file comment).
@@ -676,27 +678,6 @@ constexpr double kTolerance = 1e-5;
 /// The watchdog's limit per cell (seconds).
 constexpr double kWatchdog = 5;
 
-template <typename S>
-using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
-
-/// Our shape for a case's shape, in scalar S.
-template <typename S>
-AnyShape<S> ourShape(const ShapeSpec& s) {
-  auto points = [&] {
-    std::vector<Vector3<S>> out;
-    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
-    return out;
-  };
-  switch (s.kind) {
-    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
-    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
-    case ShapeKind::Polytope: return Polytope<S>::hull(points());
-    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
-  }
-  throw std::logic_error("extreme cases: unknown shape");
-}
 
 /// Calls `method(P, Q, L)` on the query's two moving bodies, in scalar S.
 template <typename S, typename F>

@@ -106,26 +106,6 @@ struct ToiStudyResults {
 
 namespace detail {
 
-template <typename S>
-using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
-
-template <typename S>
-AnyShape<S> ourShape(const ShapeSpec& s) {
-  auto points = [&] {
-    std::vector<Vector3<S>> out;
-    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
-    return out;
-  };
-  switch (s.kind) {
-    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
-    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
-    case ShapeKind::Polytope: return Polytope<S>::hull(points());
-    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
-  }
-  return Box<S>(Vector3<S>::Ones());
-}
 
 /// A query in one scalar type: shapes, motions, and the relative speed bound L.
 template <typename S>

@@ -40,7 +40,9 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace gjkx::toistudy {
@@ -125,6 +127,29 @@ inline ShapeSpec diskSpec(double r) {
   s.kind = ShapeKind::Disk;
   s.radius = r;
   return s;
+}
+
+/// Our shape for a study shape, in scalar S (a disk is a sphere in the plane z = 0).
+template <typename S>
+using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
+
+/// The library's shape for a ShapeSpec, in scalar S.
+template <typename S>
+AnyShape<S> ourShape(const ShapeSpec& s) {
+  auto points = [&] {
+    std::vector<Vector3<S>> out;
+    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
+    return out;
+  };
+  switch (s.kind) {
+    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
+    case ShapeKind::Sphere:
+    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
+    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
+    case ShapeKind::Polytope: return Polytope<S>::hull(points());
+    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
+  }
+  throw std::logic_error("study: unknown shape kind");
 }
 
 /// A rigid motion over [0, 1] by its parameters (see the file comment).
