@@ -246,6 +246,29 @@ TEST_CASE("the certified margin is Δ²/8 (D_P + D_Q)", "[extrusion][certified]"
   CHECK(extrusionTest(tri, point, 0.0, 1.0, certified).margin == 0.0);
 }
 
+TEST_CASE("the lowest supporting distance under the margin's parabola", "[extrusion][certified]") {
+  // Paper variant: no margin, the chord's lower end.
+  CHECK(lowestSupportingDistance(ExtrusionVariant::Paper, 0.3, 0.1, 1.0, 5.0, 5.0) == 0.1);
+  CHECK(lowestSupportingDistance(ExtrusionVariant::Paper, 1e-6, 2.0, 1.0, 5.0, 5.0) == 1e-6);
+  // Certified: the least of g(τ) = sd0 + (sd1 - sd0)τ - c τ(1 - τ), c = Δ²/2 (D_P + D_Q),
+  // against a dense sampling of g, on rising, falling and flat chords.
+  const double D = 0.4 + 0.6, delta = 0.5, c = delta * delta / 2 * D;
+  for (const auto& ends : {std::pair<double, double>{1e-6, 1.0}, {1e-6, 0.01}, {0.2, 0.2}, {0.3, -0.1}, {0.0, 0.5}}) {
+    double least = std::min(ends.first, ends.second);
+    for (int k = 0; k <= 100000; ++k) {
+      const double tau = k / 100000.0;
+      least = std::min(least, ends.first + (ends.second - ends.first) * tau - c * tau * (1 - tau));
+    }
+    INFO("sd0 " << ends.first << " sd1 " << ends.second);
+    CHECK(lowestSupportingDistance(ExtrusionVariant::Certified, ends.first, ends.second, delta, 0.4, 0.6) ==
+          Approx(least).margin(1e-9));
+  }
+  // Rising faster than c: the margin never bites, the bodies stay at least sd0 apart, where
+  // the flat bound min(sd0, sd1) - c/4 would be negative.
+  CHECK(lowestSupportingDistance(ExtrusionVariant::Certified, 1e-6, 1.0, delta, 0.4, 0.6) == 1e-6);
+  CHECK(1e-6 - extrusionMargin(ExtrusionVariant::Certified, delta, 0.4, 0.6) < 0);
+}
+
 // Under fast rotation the paper's test accepts a vector the certified test declines.
 // P: a thin rod (box of half extents (2, 0.05, 0.05)) at the origin turning a half turn
 // about z over [0, 1] (ω = π). Q: a sphere of radius 0.5 fixed at (0, 1.5, 0).

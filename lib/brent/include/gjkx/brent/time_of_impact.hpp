@@ -249,17 +249,17 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
       return result;
     case ExtrusionStatus::CollidingAtStart: {
       // Within the tolerance at t0. Along the closest direction n, the supporting distance
-      // is at least its smaller end value minus the margin over the interval (linear and
-      // per-vertex linear motion: minus nothing). If that stays positive, the bodies never
-      // touch: they are moving apart.
+      // is at least its chord less the margin's parabola (certified_margin.hpp; linear and
+      // per-vertex linear motion: less nothing). If that stays positive and it rises, the
+      // bodies never touch: they are moving apart.
       detail::takeContact(result, t0, test);
-      const S margin = extrusionMargin(settings.variant, t1 - t0, accelerationP, accelerationQ);
       bool apart = false;
       if (result.distance > S(0) && result.normal.squaredNorm() > S(0)) {
         const S sd0 = supportingDistanceAt(P, Q, result.normal, t0);
         const S sd1 = supportingDistanceAt(P, Q, result.normal, t1);
         result.sdEvaluations += 2;
-        apart = sd0 > S(0) && sd1 >= sd0 && std::min(sd0, sd1) - margin > S(0);
+        apart = sd0 > S(0) && sd1 >= sd0 &&
+                lowestSupportingDistance(settings.variant, sd0, sd1, t1 - t0, accelerationP, accelerationQ) > S(0);
       }
       result.status = apart ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
       return result;

@@ -22,6 +22,8 @@
 /// the certified test is then the paper's test.
 #pragma once
 
+#include <algorithm>
+
 namespace gjkx {
 
 /// Which extrusion test to run.
@@ -41,6 +43,26 @@ template <typename S>
 S extrusionMargin(ExtrusionVariant variant, S duration, S accelerationBoundP, S accelerationBoundQ) {
   if (variant == ExtrusionVariant::Paper) return S(0);
   return duration * duration / S(8) * (accelerationBoundP + accelerationBoundQ);
+}
+
+/// The least value the supporting distance along a fixed vector can take over an interval,
+/// given its end values `sd0` and `sd1` (see the file comment; 0 margin for the paper's variant).
+///
+/// **Derivation.** With \f$\tau = (t - t_a)/\Delta\f$ and \f$c = \tfrac{\Delta^2}{2}(D_P + D_Q)\f$,
+/// the bound of the file comment, kept as a function of t rather than its worst case, is
+/// \f$g(\tau) = sd_0 + (sd_1 - sd_0)\,\tau - c\,\tau(1 - \tau)\f$, a parabola opening upwards.
+/// Its least value on [0, 1] is at \f$\tau^* = \frac{c - (sd_1 - sd_0)}{2c}\f$ when that lies
+/// inside, else at an end. Near an end the margin vanishes with its distance to it, so
+/// bodies that start a hair apart and move apart faster than c are proven apart, where the
+/// flat bound \f$\min(sd_0, sd_1) - m(\Delta)\f$ (m = c/4) would not.
+template <typename S>
+S lowestSupportingDistance(ExtrusionVariant variant, S sd0, S sd1, S duration, S accelerationBoundP,
+                           S accelerationBoundQ) {
+  const S c = S(4) * extrusionMargin(variant, duration, accelerationBoundP, accelerationBoundQ);
+  if (!(c > S(0))) return std::min(sd0, sd1);  // no margin: the chord's lower end
+  const S rise = sd1 - sd0;
+  const S tau = std::clamp((c - rise) / (S(2) * c), S(0), S(1));
+  return sd0 + rise * tau - c * tau * (S(1) - tau);
 }
 
 }  // namespace gjkx
