@@ -513,3 +513,76 @@ TEST_CASE("hard: a long segment piercing a tiny box is not reported separated (f
   checkEnds(back);
   CHECK((back.status == GjkStatus::Overlapping || back.lowerBound > 0));
 }
+
+TEMPLATE_TEST_CASE("hard: a polytope overlapping a box at sizes from 1e-8 to 1e7 (fuzz finding)", "[gjk][hard][fuzz]",
+                   float, double) {
+  // The finding, in float: a hull of 8 points about 1e-8 across, half inside a box of
+  // half extent 4.3e-9, came out Separated at 2.1e-11: the sub-algorithm's sign tests
+  // multiply up to six lengths, 1e-48, which underflows in float, and the tetrahedron
+  // around the origin was taken for flat. The same pair scaled by 10^k must overlap at
+  // every k, in both scalar types.
+  using S = TestType;
+  using V = Vector3<S>;
+  const std::vector<Eigen::Vector3d> cloud = {
+      {-8.630371e-09, -8.630371e-09, -8.932495e-09}, {-8.549658e-11, -7.731828e-09, -9.745542e-09},
+      {-9.443418e-09, -8.549658e-11, -8.033952e-09}, {-8.985431e-10, 8.130465e-10, -8.846999e-09},
+      {-7.731828e-09, -9.443418e-09, -3.876207e-10}, {8.130465e-10, -8.544875e-09, -1.200667e-09},
+      {-8.544875e-09, -8.985431e-10, 5.109224e-10},  {6.430128e-17, 6.430128e-17, -3.021240e-10}};
+  for (int k = 0; k <= 15; ++k) {
+    const double scale = std::pow(10.0, k);
+    std::vector<V> points;
+    for (const auto& x : cloud) points.push_back((x * scale).cast<S>());
+    const Polytope<S> P = Polytope<S>::hull(points);
+    const Box<S> Q(V::Constant(S(4.3151855e-09 * scale)));
+    const GjkResult<S> r = gjk(P, Q);
+    INFO("size 1e" << (k - 8) << ": " << toString(r.status) << " at " << r.distance);
+    checkEnds(r);
+    CHECK(r.status == GjkStatus::Overlapping);
+  }
+}
+
+namespace {
+// A finite point set as a support mapping, by looking at every point (any point set,
+// flat ones included).
+struct PointCloud {
+  using Scalar = double;
+  std::vector<Vector3<double>> points;
+  Vector3<double> support(const Vector3<double>& s) const {
+    Vector3<double> best = points[0];
+    for (const auto& x : points)
+      if (x.dot(s) > best.dot(s)) best = x;
+    return best;
+  }
+  Vector3<double> center() const {
+    Vector3<double> c = Vector3<double>::Zero();
+    for (const auto& x : points) c += x;
+    return c / double(points.size());
+  }
+};
+}  // namespace
+
+TEST_CASE("hard: a tiny polytope through a flat rectangle 2000 wide is overlapping (fuzz finding)", "[gjk][hard][fuzz]") {
+  // V_Q - V_P is a slab 2e-7 thick and 2000 wide. After three iterations z is 1.7e-8 from
+  // the origin and the next support lies 3e-8 beyond it (SD < 0); the new triangle,
+  // tilted across the origin, came out 1.5e-14 farther, and "until the distance no longer
+  // decreases" stopped with Separated at 1.7e-8 while the shapes overlap by 9e-9. That
+  // difference is round-off of the simplex's size (eps * 1000 = 2e-13), a tie: GJK takes
+  // it and the next support finds the origin inside.
+  using V = Vector3<double>;
+  const PointCloud P{{V(7.7825927734375002e-08, 1.72564697265625e-07, -2.2283935546874999e-08),
+                      V(1.048583984375001e-08, 4.2926025390625001e-08, -5.7070922851562499e-08),
+                      V(1.349639892578125e-07, 7.4179077148437501e-08, 0),
+                      V(9.99969482421875e-08, 9.99969482421875e-08, -6.2499999999999997e-08),
+                      V(6.7269897460937499e-08, -3.0517578124951111e-12, -9.9999999999999995e-08),
+                      V(1.696441650390625e-07, 3.87298583984375e-08, -4.0362548828124998e-08),
+                      V(-3.0517578124951111e-12, -3.0517578124951111e-12, -1.6619873046875e-08),
+                      V(1.99993896484375e-07, 1.99993896484375e-07, 0)}};
+  const PointCloud Q{{V(-631.07433837310987, -69.609255376890232, 760.79874350162197),
+                      V(763.96344537671143, -63.279851626711249, 627.9096364980204),
+                      V(-763.96344537671143, 63.279851626711249, -627.9096364980204),
+                      V(631.07433837310987, 69.609255376890232, -760.79874350162197)}};
+  const GjkResult<double> r = gjk(P, Q);
+  INFO(toString(r.status) << " at " << r.distance << ", lower bound " << r.lowerBound);
+  checkEnds(r);
+  CHECK(r.status == GjkStatus::Overlapping);
+}

@@ -185,6 +185,19 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
     return false;
   };
 
+  // Ties: steps taken although |z| did not fall, at most kMaxTies per run (see below). A
+  // tie is a new |z| within round-off of the old, which is about epsilon times the
+  // simplex's own size, not |z|'s: z is computed from the w, and on a flat V_Q - V_P
+  // 2000 wide a |z| of 1.7e-8 is only good to 1e-13 or so.
+  constexpr int kMaxTies = 2;
+  int ties = 0;
+  auto isTie = [&](const Simplex<S>& x, const Vector3<S>& w, S mdNew) {
+    if (ties >= kMaxTies || !contains(x, w)) return false;
+    S wMax2 = S(0);
+    for (int k = 0; k < x.size; ++k) wMax2 = std::max(wMax2, x.vertices[k].w.squaredNorm());
+    return mdNew <= md + S(8) * std::numeric_limits<S>::epsilon() * std::sqrt(wMax2);
+  };
+
   for (int i = 0; i < settings.maxIterations; ++i) {
     result.iterations = i + 1;
     const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
@@ -246,10 +259,17 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
         z = zNew;
         md = S(0);
         step = GjkStep::Overlap;
-      } else if (!(mdNew < md)) {
+      } else if (!(mdNew < md) && !isTie(simplex, v.w, mdNew)) {
         simplex.assignUsed(before);  // "until this distance no longer decreases": keep the better simplex
         step = GjkStep::Converged;
       } else {
+        // A decrease, or a tie within round-off with w kept in the new simplex. Near the
+        // end the distance falls as the square of z's angle to the optimum (|z| cos θ), so
+        // in float it stops falling while the direction is still ~sqrt(ε) off and the gap
+        // MD - SD open; and on a flat V_Q - V_P, a new triangle tilted across the origin
+        // can be farther by round-off while SD is negative. A tie taken once or twice lets
+        // the next support close the gap (or find the origin inside).
+        if (!(mdNew < md)) ++ties;
         z = zNew;
         md = mdNew;
       }

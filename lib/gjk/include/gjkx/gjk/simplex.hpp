@@ -139,12 +139,24 @@ Vector3<S> edge(const Vertices<S>& v, int a, int b) {
 }
 
 /// What the sub-algorithm measures once per call and reads many times (speed: a
-/// tetrahedron's faces share their edges): each vertex's \f$\lVert w\rVert^2\f$, and every
-/// edge (`edge`, from the support points) with its squared length.
+/// tetrahedron's faces share their edges): each vertex's w and \f$\lVert w\rVert^2\f$, and
+/// every edge (`edge`, from the support points) with its squared length, all in units
+/// where the largest coordinate of a w is in [1, 2).
+///
+/// Why the units. The signs below are trusted by comparing products of up to six lengths
+/// (a squared height against squared edges times a squared length); in float, on shapes
+/// 1e-8 across, those are 1e-48 and underflow to zero, and a tetrahedron 1.7e-3 (relative)
+/// around the origin was taken for flat and the origin left outside (a fuzz finding; its
+/// twin overflows on coordinates of 1e7). Scaling by a power of two is exact, so the
+/// answers at ordinary scales do not change; z is scaled back by `reduceToClosestFeature`.
 template <typename S>
 struct Geometry {
-  /// The vertices.
+  /// The vertices (their p and q give the edges).
   const Vertices<S>& v;
+  /// The units: each w here is the vertex's w times `scale`, a power of two.
+  S scale = S(1);
+  /// \f$w_k\f$, in these units.
+  std::array<Vector3<S>, 4> w;
   /// \f$\lVert w_k\rVert^2\f$.
   std::array<S, 4> w2{};
   /// \f$w_b - w_a\f$ for a < b, at `pair(a, b)`.
@@ -153,10 +165,16 @@ struct Geometry {
   std::array<S, 6> edges2{};
   /// Measures the first `size` vertices.
   Geometry(const Vertices<S>& vertices, int size) : v(vertices) {
-    for (int k = 0; k < size; ++k) w2[k] = v[k].w.squaredNorm();
+    S largest = S(0);
+    for (int k = 0; k < size; ++k) largest = std::max(largest, v[k].w.cwiseAbs().maxCoeff());
+    if (largest > S(0) && largest < std::numeric_limits<S>::infinity()) scale = std::ldexp(S(1), -std::ilogb(largest));
+    for (int k = 0; k < size; ++k) {
+      w[k] = v[k].w * scale;
+      w2[k] = w[k].squaredNorm();
+    }
     for (int a = 0; a < size; ++a)
       for (int b = a + 1; b < size; ++b) {
-        edges[pair(a, b)] = detail::edge(v, a, b);
+        edges[pair(a, b)] = detail::edge(v, a, b) * scale;
         edges2[pair(a, b)] = edges[pair(a, b)].squaredNorm();
       }
   }
@@ -173,7 +191,7 @@ Feature<S> vertexFeature(const Geometry<S>& g, int a) {
   Feature<S> f;
   f.keep = 1u << a;
   f.lambda[a] = S(1);
-  f.z = g.v[a].w;
+  f.z = g.w[a];
   f.distanceSquared = g.w2[a];
   return f;
 }
@@ -191,17 +209,16 @@ Feature<S> vertexFeature(const Geometry<S>& g, int a) {
 /// with \f$t_I\f$ exactly when p0 lies inside the segment; otherwise the closest point is an end.
 template <typename S>
 Feature<S> segment(const Geometry<S>& g, int a, int b) {
-  const Vertices<S>& v = g.v;
   const Vector3<S> t = g.edge(a, b);
   const S tt = g.edge2(a, b);
   if (!(tt > S(0))) return vertexFeature(g, a);  // coincident ends: a point
-  const Vector3<S>& wo = g.w2[a] <= g.w2[b] ? v[a].w : v[b].w;
+  const Vector3<S>& wo = g.w2[a] <= g.w2[b] ? g.w[a] : g.w[b];
   const Vector3<S> p0 = t.cross(wo.cross(t)) / tt;
   int I = 0;
   t.cwiseAbs().maxCoeff(&I);
   const S muMax = t[I];
-  const S cA = v[b].w[I] - p0[I];
-  const S cB = p0[I] - v[a].w[I];
+  const S cA = g.w[b][I] - p0[I];
+  const S cB = p0[I] - g.w[a][I];
   if (sameSign(muMax, cA) && sameSign(muMax, cB)) {
     Feature<S> f;
     f.keep = (1u << a) | (1u << b);
@@ -271,7 +288,6 @@ int nearestOf(const Geometry<S>& g, std::initializer_list<int> ids) {
 /// multiplies one accurate edge by one rounded vector.
 template <typename S>
 Feature<S> triangle(const Geometry<S>& g, int a, int b, int c, const TriangleNormal<S>* known = nullptr) {
-  const Vertices<S>& v = g.v;
   const TriangleNormal<S> tn = known ? *known : normalOf(g, a, b, c);  // a tetrahedron passes its face's
   const Vector3<S>& n = tn.n;
   const S nn = n.squaredNorm();
@@ -283,14 +299,14 @@ Feature<S> triangle(const Geometry<S>& g, int a, int b, int c, const TriangleNor
   n.cwiseAbs().maxCoeff(&I);
   constexpr S safety2 = signSafety<S>() * signSafety<S>();
   if (n[I] * n[I] > safety2 * tn.scale2) {  // else degenerate: search every edge
-    const Vector3<S>& wo = v[nearestOf(g, {a, b, c})].w;
+    const Vector3<S>& wo = g.w[nearestOf(g, {a, b, c})];
     const Vector3<S> p0 = n * (wo.dot(n) / nn);
     const int x = (I + 1) % 3, y = (I + 2) % 3;  // cyclic, so the projected area is +n_I
     muMax = n[I];
     const std::array<int, 3> ids{a, b, c};
     for (int k = 0; k < 3; ++k) {
       const int from = ids[(k + 1) % 3], to = ids[(k + 2) % 3];
-      const Vector3<S> e = g.edge(from, to), d = p0 - v[from].w;
+      const Vector3<S> e = g.edge(from, to), d = p0 - g.w[from];
       C[k] = cross2(e, d, x, y);  // area (from, to, p0): vertex k replaced by p0
       // |C_k| above its round-off, eps |e| (|p0| + |w_from|) (compared squared, with
       // (a + b)^2 <= 2 (a^2 + b^2), to save the square roots).
@@ -331,7 +347,6 @@ Feature<S> triangle(const Geometry<S>& g, int a, int b, int c, const TriangleNor
 /// the faces whose coordinate is negative or not trusted.
 template <typename S>
 Feature<S> tetrahedron(const Geometry<S>& g) {
-  const Vertices<S>& v = g.v;
   constexpr S safety2 = signSafety<S>() * signSafety<S>();
   std::array<S, 4> C{}, D{};
   std::array<bool, 4> trusted{};
@@ -342,7 +357,7 @@ Feature<S> tetrahedron(const Geometry<S>& g) {
     const TriangleNormal<S>& tn = normals[k] = normalOf(g, f0, f1, f2);
     const int o = nearestOf(g, {f0, f1, f2});
     const Vector3<S> h = g.edge(o, k);
-    C[k] = -tn.n.dot(v[o].w);  // the origin's height over face k, times |n_k|
+    C[k] = -tn.n.dot(g.w[o]);  // the origin's height over face k, times |n_k|
     D[k] = tn.n.dot(h);        // vertex k's height over face k, times |n_k|
     // Each above its round-off, eps |n_k| times the other factor's length (compared squared).
     trusted[k] = C[k] * C[k] > safety2 * tn.scale2 * g.w2[o];
@@ -360,7 +375,7 @@ Feature<S> tetrahedron(const Geometry<S>& g) {
     f.distanceSquared = S(0);  // the origin is inside: z = 0
     if (trusted[0] && trusted[1] && trusted[2] && trusted[3]) return f;
     // An untrusted "inside" is only a candidate, at the point its coordinates give.
-    for (int k = 0; k < 4; ++k) f.z += f.lambda[k] * v[k].w;
+    for (int k = 0; k < 4; ++k) f.z += f.lambda[k] * g.w[k];
     f.distanceSquared = f.z.squaredNorm();
     best = f;
   }
@@ -396,7 +411,7 @@ void reduceToClosestFeature(Simplex<S>& simplex) {
     ++kept;
   }
   simplex.size = kept;
-  simplex.z = f.z;
+  simplex.z = f.z / g.scale;  // back from the sub-algorithm's units (exact: a power of two)
 }
 
 }  // namespace gjkx
