@@ -4,6 +4,7 @@
 // Overlapping only when the reference says the shapes are within the slack, a
 // separating vector only above its threshold, the lower bound never above the
 // distance, no NaN anywhere, and no NumericalFailure on finite input.
+// GJKX_FUZZ_VERBOSE=1 prints each run's iterations.
 #include "fuzz_common.hpp"
 
 namespace gjkx::fuzz {
@@ -35,6 +36,22 @@ void run(Decoder& in) {
     // Rounded shapes run on their cores (exact, like polytopes) unless told otherwise.
     const bool rounded = (a.radius > 0 || b.radius > 0) && !settings.roundedCores;
     context() = std::string(sizeof(S) == 4 ? "float " : "double ") + what + " P " + describe(a) + " Q " + describe(b);
+    if (std::getenv("GJKX_FUZZ_VERBOSE")) {  // the run's trace, from a copy of the cache
+      GjkCache<S> copy;
+      if (cache) copy = *cache;
+      GjkTrace<S> trace;
+      gjk(place(shapeP, p), place(shapeQ, q), settings, cache ? &copy : nullptr, trace);
+      for (const GjkIteration<S>& it : trace.iterations) {
+        std::fprintf(stderr, "gjk %s: i %d p (%.17g %.17g %.17g) q (%.17g %.17g %.17g) sd %.17g md %.17g step %d simplex",
+                     what, it.i, double(it.supportP.x()), double(it.supportP.y()), double(it.supportP.z()),
+                     double(it.supportQ.x()), double(it.supportQ.y()), double(it.supportQ.z()),
+                     double(it.supportingDistance), double(it.minkowskiDistance), int(it.step));
+        for (int k = 0; k < it.simplex.size; ++k)
+          std::fprintf(stderr, " (%.17g %.17g %.17g)", double(it.simplex.vertices[k].w.x()),
+                       double(it.simplex.vertices[k].w.y()), double(it.simplex.vertices[k].w.z()));
+        std::fprintf(stderr, "\n");
+      }
+    }
     const GjkResult<S> r = gjk(place(shapeP, p), place(shapeQ, q), settings, cache);
     checkGjk(r, settings, ref, extent, rounded, what);
     // The same pair the other way round: the same answer (the distance is symmetric).
