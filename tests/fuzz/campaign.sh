@@ -1,9 +1,12 @@
 #!/bin/sh
 # One CTest fuzzing campaign: runs a libFuzzer target for a fixed time from the seed corpus
-# into a fresh output folder, with a fixed seed so that a campaign that fails in CI replays
-# the same inputs here (`-seed=0` picks a random one). Quiet (-verbosity=0), so that the
-# log ends with what matters; on a failure it prints the input that failed, byte by byte,
-# and reruns it with GJKX_FUZZ_VERBOSE=1 (the decoded bodies and the violation).
+# into a fresh output folder, with a fixed seed (`-seed=0` picks a random one). The seed
+# fixes the mutations, not the whole run: libFuzzer orders the seed files by size, and
+# files of equal size in the order the file system lists them, which differs between
+# machines. So a failure in CI must carry its own evidence: the run is quiet
+# (-verbosity=0) so that the log ends with what matters, and on a failure the script
+# prints the input that failed, byte by byte, and reruns it with GJKX_FUZZ_VERBOSE=1 (the
+# decoded bodies and the violation).
 #   campaign.sh <target> <artifact folder> <seed corpus> <seconds> <seed>
 target=$1 artifacts=$2 seeds=$3 seconds=$4 seed=$5
 out=$(mktemp -d) || exit 1
