@@ -484,3 +484,26 @@ TEMPLATE_TEST_CASE("simplex: the same answer at every scale (powers of two)", "[
     }
   }
 }
+
+TEMPLATE_TEST_CASE("simplex: the sub-algorithm's units, a power of two read from the exponent", "[gjk][simplex]",
+                   float, double) {
+  // unitsFor(x) brings x into [1, 2); 1 where there is no such power or none is needed.
+  using S = TestType;
+  CHECK(detail::unitsFor(S(1)) == S(1));
+  CHECK(detail::unitsFor(S(3)) == S(0.5));
+  CHECK(detail::unitsFor(S(0.75)) == S(2));
+  CHECK(detail::unitsFor(S(1e-8)) * S(1e-8) >= S(1));
+  CHECK(detail::unitsFor(S(1e-8)) * S(1e-8) < S(2));
+  CHECK(detail::unitsFor(S(1e30)) * S(1e30) >= S(1));
+  CHECK(detail::unitsFor(S(1e30)) * S(1e30) < S(2));
+  CHECK(detail::unitsFor(std::numeric_limits<S>::min()) * std::numeric_limits<S>::min() == S(1));
+  CHECK(detail::unitsFor(S(0)) == S(1));
+  CHECK(detail::unitsFor(std::numeric_limits<S>::denorm_min()) == S(1));
+  CHECK(detail::unitsFor(std::numeric_limits<S>::infinity()) == S(1));
+  CHECK(detail::unitsFor(std::numeric_limits<S>::max()) == S(1));  // 2^-max_exponent is subnormal
+  for (int e = std::numeric_limits<S>::min_exponent; e < std::numeric_limits<S>::max_exponent - 1; ++e) {
+    const S x = std::ldexp(S(1.5), e - 1);
+    INFO("x = 1.5 * 2^" << (e - 1));
+    CHECK(detail::unitsFor(x) == std::ldexp(S(1), 1 - e));
+  }
+}

@@ -22,9 +22,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <type_traits>
 
 namespace gjkx {
 
@@ -138,6 +141,32 @@ Vector3<S> edge(const Vertices<S>& v, int a, int b) {
   return (v[b].q - v[a].q) - (v[b].p - v[a].p);
 }
 
+/// \f$2^{-e}\f$ for \f$x \in [2^e, 2^{e+1})\f$: the power of two that brings x into [1, 2),
+/// or 1 for zero, subnormal, infinite and NaN x. Read from the exponent bits of a float or
+/// double (speed: `std::ldexp(1, -std::ilogb(x))` costs two library calls, 5% of a GJK
+/// distance query, and this runs at every sub-algorithm call).
+template <typename S>
+S unitsFor(S x) {
+  if constexpr (std::is_same_v<S, double> || std::is_same_v<S, float>) {
+    using Bits = std::conditional_t<std::is_same_v<S, double>, std::uint64_t, std::uint32_t>;
+    constexpr int mantissa = std::numeric_limits<S>::digits - 1;           // 52 or 23
+    constexpr Bits exponentMask = (Bits(1) << (sizeof(S) * 8 - 1 - mantissa)) - 1;  // 0x7FF or 0xFF
+    Bits bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const Bits biased = (bits >> mantissa) & exponentMask;
+    if (biased == 0 || biased == exponentMask) return S(1);  // zero, subnormal, inf, NaN
+    // x = 2^(biased - bias) * 1.m, bias = mask / 2; 2^-(biased - bias) has biased
+    // exponent 2 bias - biased = mask - 1 - biased, in [1, mask - 1] for normal x.
+    const Bits inverse = (exponentMask - 1 - biased) << mantissa;
+    S out;
+    std::memcpy(&out, &inverse, sizeof out);
+    return inverse == 0 ? S(1) : out;
+  } else {
+    if (!(x > S(0)) || !(x < std::numeric_limits<S>::infinity())) return S(1);
+    return std::ldexp(S(1), -std::ilogb(x));
+  }
+}
+
 /// What the sub-algorithm measures once per call and reads many times (speed: a
 /// tetrahedron's faces share their edges): each vertex's w and \f$\lVert w\rVert^2\f$, and
 /// every edge (`edge`, from the support points) with its squared length, all in units
@@ -167,7 +196,7 @@ struct Geometry {
   Geometry(const Vertices<S>& vertices, int size) : v(vertices) {
     S largest = S(0);
     for (int k = 0; k < size; ++k) largest = std::max(largest, v[k].w.cwiseAbs().maxCoeff());
-    if (largest > S(0) && largest < std::numeric_limits<S>::infinity()) scale = std::ldexp(S(1), -std::ilogb(largest));
+    scale = unitsFor(largest);
     for (int k = 0; k < size; ++k) {
       w[k] = v[k].w * scale;
       w2[k] = w[k].squaredNorm();
