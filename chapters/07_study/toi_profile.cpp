@@ -82,6 +82,17 @@ struct Counts {
   long long gjkRuns = 0, brentIterations = 0, restarts = 0, sdEvaluations = 0;
 };
 
+// `repeat` calls of `run` with callgrind counting (when built with valgrind's header);
+// the last call's answer.
+template <typename Run>
+auto profiled(int repeat, Run run) {
+  decltype(run()) r{};
+  GJKX_PROFILE_START();
+  for (int k = 0; k < repeat; ++k) r = run();
+  GJKX_PROFILE_STOP();
+  return r;
+}
+
 // One run of ours (double), keeping the solver's own counters.
 study::Outcome runOurs(const study::Prepared<double>& p, const Options& o, Counts& counts) {
   return std::visit(
@@ -92,10 +103,7 @@ study::Outcome runOurs(const study::Prepared<double>& p, const Options& o, Count
         settings.collisionTolerance = o.tol;
         settings.timeTolerance = std::min(settings.timeTolerance, o.tol);
         settings.variant = o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper;
-        ToiResult<double> r;
-        GJKX_PROFILE_START();
-        for (int k = 0; k < o.repeat; ++k) r = timeOfImpact(P, Q, 0.0, 1.0, settings);
-        GJKX_PROFILE_STOP();
+        const ToiResult<double> r = profiled(o.repeat, [&] { return timeOfImpact(P, Q, 0.0, 1.0, settings); });
         counts.gjkRuns += r.gjkRuns;
         counts.brentIterations += r.brentIterations;
         counts.restarts += r.restarts;
@@ -127,10 +135,7 @@ int main(int argc, char** argv) {
       } else if (o.method == "fcl_ca") {
 #if GJKX_HAVE_FCL
         const peers::FclQuery fcl(q);
-        peers::PeerOutcome r;
-        GJKX_PROFILE_START();
-        for (int k = 0; k < o.repeat; ++k) r = fcl.run(true, 1e-4, fcl::GST_LIBCCD);
-        GJKX_PROFILE_STOP();
+        const peers::PeerOutcome r = profiled(o.repeat, [&] { return fcl.run(true, 1e-4, fcl::GST_LIBCCD); });
         out = study::Outcome{r.hit, r.time};
 #else
         std::fprintf(stderr, "toi_profile: FCL was not found at build time\n");
@@ -139,10 +144,7 @@ int main(int argc, char** argv) {
       } else {
 #if GJKX_HAVE_BULLET
         const peers::BulletQuery bullet(q);
-        peers::PeerOutcome r;
-        GJKX_PROFILE_START();
-        for (int k = 0; k < o.repeat; ++k) r = bullet.run();
-        GJKX_PROFILE_STOP();
+        const peers::PeerOutcome r = profiled(o.repeat, [&] { return bullet.run(); });
         out = study::Outcome{r.hit, r.time};
 #else
         std::fprintf(stderr, "toi_profile: Bullet was not found at build time\n");

@@ -171,12 +171,16 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
   // The origin is in the simplex, or within round-off of it (relative to its own size):
   // \f$\lVert z\rVert \le \tau\max_k\lVert w_k\rVert\f$, z the simplex's closest point. Compared
   // squared, \f$\lVert z\rVert^2 \le \tau^2\max_k\lVert w_k\rVert^2\f$, to save the square roots (speed).
-  auto overlapsAt = [&](const Simplex<S>& x, const Vector3<S>& zx) {
-    if (x.size == 4) return true;
+  // \f$\max_k\lVert w_k\rVert^2\f$: the simplex's size, the scale of its round-off.
+  auto largestW2 = [](const Simplex<S>& x) {
     S wMax2 = S(0);
     for (int k = 0; k < x.size; ++k) wMax2 = std::max(wMax2, x.vertices[k].w.squaredNorm());
+    return wMax2;
+  };
+  auto overlapsAt = [&](const Simplex<S>& x, const Vector3<S>& zx) {
+    if (x.size == 4) return true;
     const S tau = settings.overlapTolerance;
-    return zx.squaredNorm() <= tau * tau * wMax2;
+    return zx.squaredNorm() <= tau * tau * largestW2(x);
   };
   auto overlaps = [&](const Simplex<S>& x) { return overlapsAt(x, x.closestPoint()); };
   auto contains = [](const Simplex<S>& x, const Vector3<S>& w) {
@@ -193,9 +197,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
   int ties = 0;
   auto isTie = [&](const Simplex<S>& x, const Vector3<S>& w, S mdNew) {
     if (ties >= kMaxTies || !contains(x, w)) return false;
-    S wMax2 = S(0);
-    for (int k = 0; k < x.size; ++k) wMax2 = std::max(wMax2, x.vertices[k].w.squaredNorm());
-    return mdNew <= md + S(8) * std::numeric_limits<S>::epsilon() * std::sqrt(wMax2);
+    return mdNew <= md + S(8) * std::numeric_limits<S>::epsilon() * std::sqrt(largestW2(x));
   };
 
   for (int i = 0; i < settings.maxIterations; ++i) {

@@ -143,8 +143,8 @@ Vector3<S> edge(const Vertices<S>& v, int a, int b) {
 
 /// \f$2^{-e}\f$ for \f$x \in [2^e, 2^{e+1})\f$: the power of two that brings x into [1, 2),
 /// or 1 for zero, subnormal, infinite and NaN x. Read from the exponent bits of a float or
-/// double (speed: `std::ldexp(1, -std::ilogb(x))` costs two library calls, 5% of a GJK
-/// distance query, and this runs at every sub-algorithm call).
+/// double (speed: `std::ldexp(1, -std::ilogb(x))` costs two library calls, about 3% of a
+/// cold GJK distance query on 100-vertex polytopes, and this runs at every sub-algorithm call).
 template <typename S>
 S unitsFor(S x) {
   if constexpr (std::is_same_v<S, double> || std::is_same_v<S, float>) {
