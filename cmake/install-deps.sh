@@ -14,7 +14,7 @@ packages=(
   doxygen graphviz libjs-mathjax   # docs (MathJax so formulas read offline)
   gnuplot-nox              # plots
   clang libclang-rt-14-dev # the sanitizer build and the libFuzzer targets (tests/fuzz)
-  # the comparative study (chapter 07): the peers and the benchmark harness
+  # the comparative study (chapter 09): the peers and the benchmark harness
   libccd-dev libfcl-dev libbullet-dev libbox2d-dev libbenchmark-dev
 )
 

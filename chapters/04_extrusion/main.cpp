@@ -10,8 +10,8 @@
 #include "../chapter.hpp"
 
 #include <gjkx/brent/time_of_impact.hpp>
-#include <gjkx/extrusion/extrusion_test.hpp>
-#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/support_mapping/polytope.hpp>

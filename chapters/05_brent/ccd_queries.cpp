@@ -16,7 +16,7 @@
 //   total queries=N positives=N fn=N fp=N us_per_query=X
 // Time is measured around the solver calls only. Bad input stops the program with a
 // message naming file:line and field, exit status 2.
-#include "ccd_query_reader.hpp"
+#include <gjkx/study/ccd_queries.hpp>
 
 #include <cstdio>
 #include <cstdlib>

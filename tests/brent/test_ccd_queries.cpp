@@ -8,7 +8,7 @@
 // the tolerance at both ends of each interval of a chain, which per-vertex linear
 // motion makes a proof. False positives are allowed (grazing contacts within the
 // tolerance, undecided queries counted as colliding), so they are only printed.
-#include "../../chapters/05_brent/ccd_query_reader.hpp"
+#include <gjkx/study/ccd_queries.hpp>
 
 #include <catch2/catch.hpp>
 

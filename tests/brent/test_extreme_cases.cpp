@@ -1,4 +1,4 @@
-// The stiff and extreme cases of the study's table (chapters/07_study/extreme_cases.hpp,
+// The stiff and extreme cases of the study's table (lib/study/include/gjkx/study/extreme_cases.hpp,
 // figures/study/extreme-cases.md), on the library's own solvers only: the time of impact
 // (the paper's extrusion test + Brent, and the certified variant, in double and float, at
 // collision tolerance 1e-5) on the ten time-of-impact cases, and GJK's distance (double and
@@ -8,7 +8,7 @@
 //
 // Where ours is wrong, the assertion stays, tagged [!shouldfail], with what is wrong: a
 // fix makes that test fail until the tag goes.
-#include "../../chapters/07_study/extreme_cases.hpp"
+#include <gjkx/study/extreme_cases.hpp>
 
 #include <catch2/catch.hpp>
 

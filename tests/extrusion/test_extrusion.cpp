@@ -7,8 +7,8 @@
 // (centre of P to centre of Q), then s_{i+1} = z. A unit box has half extents 1/2, and
 // its support in direction s is the corner in the octant of s (+1/2 on a zero component).
 #include <gjkx/extrusion/certified_margin.hpp>
-#include <gjkx/extrusion/extrusion_test.hpp>
-#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/support_mapping/polytope.hpp>

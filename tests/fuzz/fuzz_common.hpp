@@ -38,7 +38,7 @@
 #pragma once
 
 #include <gjkx/brent/time_of_impact.hpp>
-#include <gjkx/extrusion/extrusion_test.hpp>
+#include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>

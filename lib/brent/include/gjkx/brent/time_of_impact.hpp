@@ -27,7 +27,7 @@
 ///   *time of impact*: "the maximum supporting distance is positive and smaller than the
 ///   collision tolerance"), or fails again, and Brent restarts on \f$[t_x, t_1]\f$ with the
 ///   new vectors.
-/// "Positive" is read here as the extrusion test reads it (extrusion_test.hpp): above the
+/// "Positive" is read here as the extrusion test reads it (extrusion.hpp): above the
 /// collision tolerance. A stored vector \f$\vec{s}_k\f$ has \f$SD > \mathrm{tol}\f$ at \f$t_a\f$; if its SD
 /// is also \f$\ge \mathrm{tol}\f$ at \f$t_x\f$, then (linear in t for linear motion, concave for per-vertex
 /// linear motion, within the margin of the chord for the certified variant) it stays
@@ -55,7 +55,7 @@
 #pragma once
 
 #include <gjkx/brent/root_finder.hpp>
-#include <gjkx/extrusion/extrusion_test.hpp>
+#include <gjkx/extrusion/extrusion.hpp>
 
 #include <cmath>
 #include <limits>

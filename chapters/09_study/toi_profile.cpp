@@ -10,7 +10,7 @@
 // restarts and supporting distances per query. Under valgrind the counting is switched on
 // only around the method's calls (callgrind client requests, when the header is there):
 //
-//   valgrind --tool=callgrind --instr-atstart=no build/chapters/07_study/toi_profile --workload linear
+//   valgrind --tool=callgrind --instr-atstart=no build/chapters/09_study/toi_profile --workload linear
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid>
 //
 // The total instruction count divided by the "calls" line (queries x repeat) is the

@@ -1,4 +1,4 @@
-// The time-of-impact comparison of the study (chapter 07): every method on every workload
+// The time-of-impact comparison of the study (chapter 09): every method on every workload
 // of workloads.hpp, against the independent long-double reference there.
 //
 // Methods (each at the settings listed; "ours" are this library's):
@@ -29,12 +29,12 @@
 // tolerances 1e-4 ... 1e-10 in double: false negatives, false positives, time per query.
 #pragma once
 
-#include "../05_brent/ccd_query_reader.hpp"
-#include "peers_toi.hpp"
-#include "workloads.hpp"
+#include <gjkx/study/ccd_queries.hpp>
+#include <gjkx/study/peers_toi.hpp>
+#include <gjkx/study/workloads.hpp>
 
 #include <gjkx/brent/time_of_impact.hpp>
-#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 
 #include <algorithm>

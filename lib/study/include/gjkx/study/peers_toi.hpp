@@ -21,7 +21,7 @@
 // Every peer-dependent line is inside #if GJKX_HAVE_FCL / _BULLET / _BOX2D.
 #pragma once
 
-#include "workloads.hpp"
+#include <gjkx/study/workloads.hpp>
 
 #include <memory>
 #include <string>

@@ -1,4 +1,4 @@
-// study_summary: a quick version of every comparison of the study (chapter 07), in one run,
+// study_summary: a quick version of every comparison of the study (chapter 09), in one run,
 // ending with lines a script can read.
 //
 //   study_summary [--ccd-data DIR]

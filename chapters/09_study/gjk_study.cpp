@@ -1,4 +1,4 @@
-// The GJK comparison of the study (chapter 07): ours against libccd, FCL and Bullet on
+// The GJK comparison of the study (chapter 09): ours against libccd, FCL and Bullet on
 // distance and boolean queries, cold and warm-started, with the disagreement against an
 // exact reference. Prints one table per workload, float against double for ours, and ends
 // with the RATIO lines (ours-double median time / the best peer's, measured in this run).
@@ -16,7 +16,7 @@
 //   cannot sit on a log axis: it is drawn at a floor, which the figure states.
 // A full run takes about 25 s of processor time (51 s of wall time on the shared 2-core
 // machine at half a core), --quick a few seconds. Regenerate the kept figures with
-// `build/chapters/07_study/gjk_study --out figures/study`.
+// `build/chapters/09_study/gjk_study --out figures/study`.
 //
 // What each column means, and how the shapes, poses and references are made:
 // gjk_comparisons.hpp; how each peer is called (margins, warm starts): peers_gjk.hpp.
@@ -411,7 +411,7 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
   }
   {
     std::ofstream gp(base + ".gp");
-    gp << "# gnuplot script written by gjk_study (chapter 07): gnuplot " << name << ".gp\n";
+    gp << "# gnuplot script written by gjk_study (chapter 09): gnuplot " << name << ".gp\n";
     gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
     gp << "set output '" << name << ".png'\n";
     gp << "set datafile separator ','\nset termoption noenhanced\n";

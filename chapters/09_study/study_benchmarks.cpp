@@ -1,4 +1,4 @@
-// Google Benchmark of our GJK queries (chapter 07): distance and boolean, cold and
+// Google Benchmark of our GJK queries (chapter 09): distance and boolean, cold and
 // warm-started, on the study's 100-vertex polytopes, boxes, spheres and capsules. The comparison with the
 // peers is gjk_study; this is the fine-grained timer for the speed work on lib/gjk.
 //

@@ -1,4 +1,4 @@
-// toi_study: the time-of-impact part of the comparative study (chapter 07).
+// toi_study: the time-of-impact part of the comparative study (chapter 09).
 //
 //   toi_study [--out DIR] [--quick] [--ccd-data DIR] [--seed N]
 //
@@ -14,7 +14,7 @@
 // toi-float-vs-double.md and toi-ccd.md.
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
 // 2-core machine (references about 30 s of it), --quick about 20 s. Regenerate the kept
-// study figures with `build/chapters/07_study/toi_study --out figures/study`.
+// study figures with `build/chapters/09_study/toi_study --out figures/study`.
 #include "toi_comparisons.hpp"
 
 #include <cstdio>
@@ -110,7 +110,7 @@ void plotWorkload(const std::string& folder, const ToiWorkload& w, const std::ve
   }
   {
     std::ofstream gp(base + ".gp");
-    gp << "# gnuplot script written by toi_study (chapter 07): gnuplot " << std::filesystem::path(base + ".gp").filename().string() << "\n";
+    gp << "# gnuplot script written by toi_study (chapter 09): gnuplot " << std::filesystem::path(base + ".gp").filename().string() << "\n";
     gp << "set terminal pngcairo size 1200,800 font 'sans,10'\n";
     gp << "set output '" << std::filesystem::path(base + ".png").filename().string() << "'\n";
     gp << "set datafile separator ','\n";

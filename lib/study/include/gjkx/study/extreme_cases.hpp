@@ -35,10 +35,10 @@
 // signal, or an exception thrown on these valid inputs).
 #pragma once
 
-#include "workloads.hpp"
+#include <gjkx/study/workloads.hpp>
 
 #include <gjkx/brent/time_of_impact.hpp>
-#include <gjkx/extrusion/sweeping_test.hpp>
+#include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/supporting_distance/intersection.hpp>

@@ -1,4 +1,4 @@
-// The GJK comparison of the study (chapter 07): distance and boolean queries, ours
+// The GJK comparison of the study (chapter 09): distance and boolean queries, ours
 // against libccd, FCL and Bullet, cold and warm-started, with the disagreement against
 // an exact reference. `runGjkComparisons(options)` returns one row per method and
 // workload; `gjkRatioLines(rows)` the machine-readable RATIO lines.
@@ -24,7 +24,7 @@
 // (vertex-triangle, edge-edge, edge crossing a triangle) plus a vertex-containment test.
 #pragma once
 
-#include "peers_gjk.hpp"
+#include <gjkx/study/peers_gjk.hpp>
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/supporting_distance/intersection.hpp>

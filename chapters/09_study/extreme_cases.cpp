@@ -1,4 +1,4 @@
-// extreme_cases: the table of stiff and extreme cases of the study (chapter 07).
+// extreme_cases: the table of stiff and extreme cases of the study (chapter 09).
 //
 //   extreme_cases [--out DIR] [--watchdog SECONDS]
 //
@@ -13,10 +13,10 @@
 // extreme_cases.hpp and in the legend of the output). Prints the tables and writes them as
 // markdown to DIR/extreme-cases.md (default figures/study). Exits with 1 if the references
 // disagree with one another (closed forms, brute force, 2D forms). Takes a few seconds.
-// Regenerate the kept table with `build/chapters/07_study/extreme_cases --out figures/study`.
-#include "extreme_cases.hpp"
-#include "peers_gjk.hpp"
-#include "peers_toi.hpp"
+// Regenerate the kept table with `build/chapters/09_study/extreme_cases --out figures/study`.
+#include <gjkx/study/extreme_cases.hpp>
+#include <gjkx/study/peers_gjk.hpp>
+#include <gjkx/study/peers_toi.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -294,7 +294,7 @@ int main(int argc, char** argv) {
   peersMissing += (peersMissing.empty() ? "" : ", ") + std::string("libccd");
 #endif
 
-  std::printf("Stiff and extreme cases (chapter 07): every method, each cell in its own process, watchdog %.0f s\n", options.watchdog);
+  std::printf("Stiff and extreme cases (chapter 09): every method, each cell in its own process, watchdog %.0f s\n", options.watchdog);
   std::printf("peers: %s%s\n\n", peersFound.c_str(), peersMissing.empty() ? "" : ("; left out (not installed): " + peersMissing).c_str());
   std::printf("Time of impact (ours at collision tolerance %.0e; CA at %.0e; static N=32 and swept at the library's default tolerance)\n%s\n",
               kTolerance, kTolerance, textTable(toiHeader, toiRows).c_str());

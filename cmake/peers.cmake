@@ -1,0 +1,62 @@
+# The peers of the comparative study (libccd, FCL, Bullet, Box2D) and Google Benchmark,
+# from Debian's packages (cmake/install-deps.sh). Everything builds without any of them
+# and says which it left out. Each found peer adds a definition GJKX_HAVE_<PEER> to the
+# interface target gjkx_study_peers, which the library gjkx::study links.
+add_library(gjkx_study_peers INTERFACE)
+set(found "")
+set(missing "")
+
+find_package(PkgConfig)
+if(PkgConfig_FOUND)
+  pkg_check_modules(CCD IMPORTED_TARGET ccd)          # libccd: GJK, MPR
+  pkg_check_modules(BULLET IMPORTED_TARGET bullet)    # Bullet (single precision build)
+endif()
+if(CCD_FOUND)
+  target_link_libraries(gjkx_study_peers INTERFACE PkgConfig::CCD)
+  target_compile_definitions(gjkx_study_peers INTERFACE GJKX_HAVE_CCD=1)
+  list(APPEND found libccd)
+else()
+  list(APPEND missing libccd)
+endif()
+if(BULLET_FOUND)
+  target_link_libraries(gjkx_study_peers INTERFACE PkgConfig::BULLET)
+  target_compile_definitions(gjkx_study_peers INTERFACE GJKX_HAVE_BULLET=1)
+  list(APPEND found Bullet)
+else()
+  list(APPEND missing Bullet)
+endif()
+
+find_package(fcl QUIET)
+if(fcl_FOUND)
+  target_link_libraries(gjkx_study_peers INTERFACE fcl)
+  target_compile_definitions(gjkx_study_peers INTERFACE GJKX_HAVE_FCL=1)
+  list(APPEND found FCL)
+else()
+  list(APPEND missing FCL)
+endif()
+
+find_package(box2d QUIET)
+if(box2d_FOUND)
+  target_link_libraries(gjkx_study_peers INTERFACE box2d::box2d)
+  target_compile_definitions(gjkx_study_peers INTERFACE GJKX_HAVE_BOX2D=1)
+  list(APPEND found Box2D)
+else()
+  list(APPEND missing Box2D)
+endif()
+
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  set(GJKX_HAVE_BENCHMARK ON)
+  list(APPEND found "Google Benchmark")
+else()
+  set(GJKX_HAVE_BENCHMARK OFF)
+  list(APPEND missing "Google Benchmark")
+endif()
+
+list(JOIN found ", " foundText)
+message(STATUS "gjkx study: peers found: ${foundText}")
+if(missing)
+  list(JOIN missing ", " missingText)
+  message(STATUS "gjkx study: peers left out (not installed): ${missingText}")
+endif()
+
