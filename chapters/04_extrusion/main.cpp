@@ -11,6 +11,7 @@
 
 #include <gjkx/brent/time_of_impact.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/extrusion/static_sampling.hpp>
 #include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/support_mapping/placed.hpp>

@@ -8,6 +8,7 @@
 // its support in direction s is the corner in the octant of s (+1/2 on a zero component).
 #include <gjkx/extrusion/certified_margin.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/extrusion/static_sampling.hpp>
 #include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>

@@ -1,12 +1,14 @@
 /// @file
-/// @brief The two tests §1 sets the extrusion test against: static and sweeping (Fig. 1).
+/// @brief The sweeping test, one of the two tests §1 sets the extrusion test against (Fig. 1);
+/// the other, the static test, is in static_sampling.hpp.
 ///
 /// "Static intersection tests check for intersection at specific instances in time.
 /// [...] they often miss collisions, especially for small or flat objects [...] Sweeping
 /// intersection tests detect the intersection between the sweeping volumes of objects
 /// over time [...] they also conservatively report false alarms that never actually
 /// occur, because they do not account for the displacement of objects as they move."
-/// Both are here as references for the figures and the comparative study.
+/// The figures of chapter 04, the comparative study and its table of extreme cases call
+/// `sweepingTest` directly.
 #pragma once
 
 #include <gjkx/supporting_distance/intersection.hpp>
@@ -49,21 +51,6 @@ IntersectionResult<typename MovingP::Scalar> sweepingTest(const MovingP& P, cons
                                                           typename MovingP::Scalar t0, typename MovingP::Scalar t1,
                                                           const IntersectionSettings<typename MovingP::Scalar>& settings = {}) {
   return intersect(sweptHull(P, t0, t1), sweptHull(Q, t0, t1), settings);
-}
-
-/// The static test (§1) at `samples` evenly spaced times of [t0, t1] (both ends included):
-/// reports a collision only if the bodies intersect at one of them. Never a false
-/// alarm; misses what happens between the samples.
-template <typename MovingP, typename MovingQ>
-bool staticTest(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0, typename MovingP::Scalar t1,
-                int samples = 2, const IntersectionSettings<typename MovingP::Scalar>& settings = {}) {
-  using S = typename MovingP::Scalar;
-  if (samples < 2) failInput("staticTest.samples", "needs at least 2 (the two ends)");
-  for (int k = 0; k < samples; ++k) {
-    const S t = t0 + (t1 - t0) * S(k) / S(samples - 1);
-    if (intersect(P.at(t), Q.at(t), settings).status != IntersectionStatus::Disjoint) return true;
-  }
-  return false;
 }
 
 }  // namespace gjkx
