@@ -1,6 +1,8 @@
-// What every chapter program shares: its command line (--out DIR) and the
-// conversion of the library's 3D vectors to the plane of a 2D figure.
+// What every chapter program shares: its command line (--out DIR, parsed by CLI11)
+// and the conversion of the library's 3D vectors to the plane of a 2D figure.
 #pragma once
+
+#include "command_line.hpp"
 
 #include <gjkx/motion/vector.hpp>
 #include <gjkx/render/canvas.hpp>
@@ -17,20 +19,12 @@
 namespace chapter {
 
 /// The output folder from `--out DIR` (default: the current folder), created if needed.
+/// `--help` prints the usage and exits 0; any other argument is an error (exit status 2).
 inline std::string outputFolder(int argc, char** argv) {
   std::string out = ".";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      out = argv[++i];
-    } else if (arg == "--help" || arg == "-h") {
-      std::printf("usage: %s [--out DIR]\n  draws this chapter's figures as PNG files in DIR\n", argv[0]);
-      std::exit(0);
-    } else {
-      std::fprintf(stderr, "%s: unknown argument '%s' (usage: %s [--out DIR])\n", argv[0], arg.c_str(), argv[0]);
-      std::exit(2);
-    }
-  }
+  CLI::App app{"Draws this chapter's figures of the paper as PNG files in DIR."};
+  app.add_option("--out", out, "the folder for the PNG files, created if needed")->type_name("DIR")->capture_default_str();
+  parseOrExit(app, argc, argv);
   std::filesystem::create_directories(out);
   return out;
 }

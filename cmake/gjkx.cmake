@@ -41,9 +41,9 @@ endfunction()
 
 # gjkx_chapter(<NN_name> STAGES <stages>...)
 #
-# chapters/<NN_name>/main.cpp, linked with its stages and the renderer. Every
-# chapter takes --out DIR and writes its PNGs there; the target `figures`
-# runs them all into figures/.
+# chapters/<NN_name>/main.cpp, linked with its stages, the renderer and CLI11 (the
+# command line). Every chapter takes --out DIR and writes its PNGs there; the target
+# `figures` runs them all into figures/.
 function(gjkx_chapter name)
   cmake_parse_arguments(ARG "" "" "STAGES" ${ARGN})
   if(NOT GJKX_HAVE_RENDER)
@@ -52,7 +52,7 @@ function(gjkx_chapter name)
   endif()
   list(TRANSFORM ARG_STAGES PREPEND gjkx:: OUTPUT_VARIABLE stages)
   add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${name}/main.cpp)
-  target_link_libraries(${name} PRIVATE ${stages} gjkx::render)
+  target_link_libraries(${name} PRIVATE ${stages} gjkx::render CLI11::CLI11)
   gjkx_warnings(${name})
   set_property(GLOBAL APPEND PROPERTY GJKX_CHAPTERS ${name})
 endfunction()
@@ -60,12 +60,13 @@ endfunction()
 # gjkx_program(<name> SOURCE <chapters/... file> STAGES <stages>...)
 #
 # A command-line program of a chapter that draws nothing (it prints tables), so it
-# builds without the renderer too; e.g. ccd_queries in chapter 05.
+# builds without the renderer too; e.g. ccd_queries in chapter 05. Its command line
+# goes through CLI11, as every program's does.
 function(gjkx_program name)
   cmake_parse_arguments(ARG "" "SOURCE" "STAGES" ${ARGN})
   list(TRANSFORM ARG_STAGES PREPEND gjkx:: OUTPUT_VARIABLE stages)
   add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE})
-  target_link_libraries(${name} PRIVATE ${stages})
+  target_link_libraries(${name} PRIVATE ${stages} CLI11::CLI11)
   gjkx_warnings(${name})
 endfunction()
 

@@ -11,6 +11,7 @@ packages=(
   libpng-dev               # PNG output
   libqhull-dev             # convex hulls of point sets
   catch2                   # tests (v2)
+  libcli11-dev             # the command line of every program (CLI11, header only)
   doxygen graphviz libjs-mathjax   # docs (MathJax so formulas read offline)
   gnuplot-nox              # plots
   clang libclang-rt-14-dev # the sanitizer build and the libFuzzer targets (tests/fuzz)

@@ -16,8 +16,11 @@
 //   total queries=N positives=N fn=N fp=N us_per_query=X
 // Time is measured around the solver calls only. Bad input stops the program with a
 // message naming file:line and field, exit status 2.
+#include "../command_line.hpp"
+
 #include <gjkx/study/ccd_queries.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -37,49 +40,32 @@ struct Options {
   std::vector<std::string> inputs;
 };
 
-[[noreturn]] void usage(const char* program, int status) {
-  std::fprintf(status ? stderr : stdout,
-               "usage: %s [--tolerance X] [--float] [--quiet] FOLDER|FILE...\n"
-               "  runs the time-of-impact solver on the CCD benchmark's sample queries\n"
-               "  FOLDER        searched recursively for *.csv under vertex-face/ and edge-edge/\n"
-               "  FILE          a .csv file whose folder is vertex-face or edge-edge\n"
-               "  --tolerance X collision tolerance (default sqrt(eps) of the scalar type)\n"
-               "  --float       solve in float (coordinates rounded from double)\n"
-               "  --quiet       print the totals only\n",
-               program);
-  std::exit(status);
-}
+// A finite number above zero, as --tolerance needs ("1e-3"; not "0", "-1", "inf" or "1e-3x").
+const CLI::Validator positiveNumber(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0))
+        return "'" + text + "' is not a positive number";
+      return "";
+    },
+    "POSITIVE");
 
+// The command line; a bad one (an unknown option, no FOLDER|FILE, a bad value) exits with status 2.
 Options parse(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--tolerance") {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "%s: --tolerance needs a value\n", argv[0]);
-        usage(argv[0], 2);
-      }
-      const std::string text = argv[++i];
-      char* end = nullptr;
-      options.tolerance = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(options.tolerance) || !(options.tolerance > 0)) {
-        std::fprintf(stderr, "%s: --tolerance: '%s' is not a positive number\n", argv[0], text.c_str());
-        std::exit(2);
-      }
-    } else if (arg == "--float") {
-      options.useFloat = true;
-    } else if (arg == "--quiet") {
-      options.quiet = true;
-    } else if (arg == "--help" || arg == "-h") {
-      usage(argv[0], 0);
-    } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr, "%s: unknown option '%s'\n", argv[0], arg.c_str());
-      usage(argv[0], 2);
-    } else {
-      options.inputs.push_back(arg);
-    }
-  }
-  if (options.inputs.empty()) usage(argv[0], 2);
+  CLI::App app{"Runs the time-of-impact solver (§5) on the CCD benchmark's sample queries."};
+  app.add_option("--tolerance", options.tolerance, "collision tolerance (default sqrt(eps) of the scalar type)")
+      ->type_name("X")
+      ->check(positiveNumber);
+  app.add_flag("--float", options.useFloat, "solve in float (coordinates rounded from double)");
+  app.add_flag("--quiet", options.quiet, "print the totals only");
+  app.add_option("paths", options.inputs,
+                 "a FOLDER, searched recursively for *.csv under vertex-face/ and edge-edge/, or a .csv FILE "
+                 "whose folder is vertex-face or edge-edge")
+      ->type_name("FOLDER|FILE")
+      ->required();
+  chapter::parseOrExit(app, argc, argv);
   return options;
 }
 
