@@ -181,6 +181,9 @@ struct ToiResult {
 };
 
 namespace detail {
+
+/// The contact data of the complete test `test` at its start `time` (the exact distance,
+/// the witness points and the unit normal from P towards Q), into `result`.
 template <typename S>
 void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test) {
   result.time = time;
@@ -190,6 +193,332 @@ void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test) {
   const Vector3<S> z = test.witnessQ - test.witnessP;
   result.normal = z.norm() > S(0) ? Vector3<S>(z.normalized()) : Vector3<S>::Zero();
 }
+
+/// One query of the time-of-impact solver of §5, one step of the paragraph a member (see
+/// the file comment): the complete extrusion test, the Brent step, the restart at
+/// \f$t_x\f$, the photo finish and the hit. Built for one query and run once by `solve()`.
+template <typename MovingP, typename MovingQ>
+class ToiSolver {
+ public:
+  /// The scalar type of both bodies.
+  using S = typename MovingP::Scalar;
+  /// P placed at a time: the static support mapping GJK and the supporting distances run on.
+  using PlacedP = decltype(std::declval<const MovingP&>().at(S(0)));
+  /// Q placed at a time.
+  using PlacedQ = decltype(std::declval<const MovingQ&>().at(S(0)));
+
+  /// A query over \f$[t_0, t_1]\f$ (checked by `timeOfImpact`); `trace` may be null.
+  ToiSolver(const MovingP& P, const MovingQ& Q, S t0, S t1, const ToiSettings<S>& settings, ToiTrace<S>* trace)
+      : P_(P),
+        Q_(Q),
+        t0_(t0),
+        t1_(t1),
+        settings_(settings),
+        trace_(trace),
+        tol_(settings.collisionTolerance),
+        accelerationP_(S(P.accelerationBound())),
+        accelerationQ_(S(Q.accelerationBound())),
+        timeTolerance_(settings.timeTolerance * (t1 - t0)),
+        P1_(P.at(t1)),
+        Q1_(Q.at(t1)),
+        ta_(t0),
+        previousHigh_(t1),
+        taBefore_(t0) {
+    extrusion_.collisionTolerance = tol_;
+    extrusion_.variant = settings.variant;
+    extrusion_.gjk = settings.gjk;
+  }
+
+  /// §5 from start to end: the complete test over \f$[t_0, t_1]\f$; if it fails, Brent's
+  /// method on F over \f$[t_a, t_1]\f$ (first \f$t_a = t_0\f$), one Brent step at a time, until a
+  /// step lands where the stored vectors still separate by the tolerance: there a complete
+  /// test on \f$[t_x, t_1]\f$ gives a photo finish, a hit at \f$t_x\f$, or a restart at \f$t_x\f$.
+  ToiResult<S> solve() {
+    last_ = completeTest(P_.at(t0_), Q_.at(t0_), t0_);
+    if (last_.status != ExtrusionStatus::Undecided) return verdictOfFirstTest();
+    for (;;) {  // one Brent run per interval [ta, t1]: the first, then one per restart
+      if (last_.separating.count == 0) return hit(ta_, last_);
+      BrentStepper<S> brent = bracket();
+      for (;;) {
+        if (brent.converged()) return hitOnConvergedBracket(brent);
+        if (result_.brentIterations >= settings_.maxIterations) return iterationCap();
+        const BrentIterate x = brentStep(brent);
+        if (!x.separates) {  // §5's "negative": Brent goes on with F(tx) < 0
+          brent.update(x.approximateMaxSd - tol_);
+          continue;
+        }
+        ExtrusionResult<S> test = completeTestAt(x);  // §5's "positive": [ta, tx] is free of contact
+        if (test.status != ExtrusionStatus::Undecided) return verdictAt(x.t, test);
+        restartAt(x, brent, std::move(test));
+        break;
+      }
+    }
+  }
+
+ private:
+  /// One Brent iterate \f$t_x\f$: the bodies placed there and the stored vectors' verdict.
+  struct BrentIterate {
+    /// The iterate \f$t_x\f$.
+    S t;
+    /// P at \f$t_x\f$.
+    PlacedP P;
+    /// Q at \f$t_x\f$.
+    PlacedQ Q;
+    /// §5's approximate maximum supporting distance at \f$t_x\f$, less the margin.
+    S approximateMaxSd = S(0);
+    /// True when it is at least the tolerance (\f$F(t_x) \ge 0\f$): \f$[t_a, t_x]\f$ is free of contact.
+    bool separates = false;
+  };
+
+  /// The certified margin \f$m(\Delta)\f$ over an interval of length `duration`
+  /// (certified_margin.hpp; 0 for the paper's variant).
+  S margin(S duration) const { return extrusionMargin(settings_.variant, duration, accelerationP_, accelerationQ_); }
+
+  /// The complete GJK extrusion test on \f$[t_a, t_1]\f$, with the bodies placed at `ta` by the
+  /// caller (who has usually just placed them there for the approximate maximum SD) and at
+  /// \f$t_1\f$ once for all tests. Each test after the first starts where the last one ended
+  /// (`cache_`). Counts its work and records it in the trace.
+  ExtrusionResult<S> completeTest(const PlacedP& Pa, const PlacedQ& Qa, S ta) {
+    ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1_, Q1_, margin(t1_ - ta), extrusion_, &cache_);
+    ++result_.gjkRuns;
+    result_.sdEvaluations += test.sdEvaluations;
+    if (trace_) trace_->intervals.push_back({ta, test.status, test.distanceAtStart, test.separating});
+    return test;
+  }
+
+  /// The complete test on \f$[t_x, t_1]\f$ at a Brent iterate whose stored vectors separate by
+  /// the tolerance: a photo finish, a hit at \f$t_x\f$, or a restart at \f$t_x\f$ follows.
+  ExtrusionResult<S> completeTestAt(const BrentIterate& x) {
+    ++result_.restarts;
+    return completeTest(x.P, x.Q, x.t);
+  }
+
+  /// The verdict of the first complete test, over \f$[t_0, t_1]\f$, when it decided the query.
+  ToiResult<S> verdictOfFirstTest() {
+    switch (last_.status) {
+      case ExtrusionStatus::NoCollision: result_.status = ToiStatus::NoCollision; break;
+      case ExtrusionStatus::NumericalFailure: result_.status = ToiStatus::NumericalFailure; break;
+      case ExtrusionStatus::IterationCap:
+        result_.status = ToiStatus::IterationCap;
+        result_.time = t0_;
+        break;
+      case ExtrusionStatus::CollidingAtStart:
+        takeContact(result_, t0_, last_);
+        result_.status = movingApart() ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
+        break;
+      case ExtrusionStatus::Undecided: break;  // not a verdict: solve() goes on to Brent
+    }
+    return result_;
+  }
+
+  /// Within the tolerance at \f$t_0\f$: true when the bodies provably move apart. Along the
+  /// closest direction n, the supporting distance is at least its chord less the margin's
+  /// parabola (certified_margin.hpp; linear and per-vertex linear motion: less nothing). If
+  /// that stays positive and it rises, the bodies never touch.
+  bool movingApart() {
+    if (!(result_.distance > S(0) && result_.normal.squaredNorm() > S(0))) return false;
+    const S sd0 = supportingDistanceAt(P_, Q_, result_.normal, t0_);
+    const S sd1 = supportingDistanceAt(P_, Q_, result_.normal, t1_);
+    result_.sdEvaluations += 2;
+    return sd0 > S(0) && sd1 >= sd0 &&
+           lowestSupportingDistance(settings_.variant, sd0, sd1, t1_ - t0_, accelerationP_, accelerationQ_) > S(0);
+  }
+
+  /// §5's approximate maximum supporting distance at t, the bodies placed there: the largest
+  /// SD along the stored vectors, less the margin over \f$[t_a, t]\f$. The certified variant
+  /// counts a vector only as far as it separates at both \f$t_a\f$ and t: positive then proves
+  /// \f$[t_a, t]\f$ free of contact. Each vector's support searches start where its last ones
+  /// ended (its hints): the bodies have moved little since, and the climbs are short.
+  S approximateMaxSd(const PlacedP& Pt, const PlacedQ& Qt, S t) {
+    SeparatingVectors<S>& vectors = last_.separating;
+    const bool certified = settings_.variant == ExtrusionVariant::Certified;
+    S best = -std::numeric_limits<S>::infinity();
+    for (int k = 0; k < vectors.count; ++k) {
+      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k], vectors.hintP[k], vectors.hintQ[k]);
+      best = std::max(best, certified ? std::min(sd, vectors.sdStart[k]) : sd);
+    }
+    result_.sdEvaluations += vectors.count;
+    return best - margin(t - ta_);
+  }
+
+  /// The same at \f$t_1\f$, from the values the last complete test stored there.
+  S approximateMaxSdAtT1() const {
+    const SeparatingVectors<S>& vectors = last_.separating;
+    const bool certified = settings_.variant == ExtrusionVariant::Certified;
+    S best = -std::numeric_limits<S>::infinity();
+    for (int k = 0; k < vectors.count; ++k)
+      best = std::max(best, certified ? std::min(vectors.sdEnd[k], vectors.sdStart[k]) : vectors.sdEnd[k]);
+    return best - margin(t1_ - ta_);
+  }
+
+  /// Brent's bracket on \f$[t_a, t_1]\f$: \f$F(t_a)\f$ = the exact distance at \f$t_a\f$ less the
+  /// tolerance, > 0; at the far end, F at \f$t_1\f$ (\f$\le 0\f$ since the test failed; clamped)
+  /// or at a nearer time where the stored vectors are below the tolerance. Brent's history
+  /// is lost on a restart, and a first secant towards \f$t_1\f$ creeps like regula falsi where
+  /// F bends away from the chord (accelerating or turning bodies: each secant lands short, F
+  /// is above the tolerance there, and every restart costs a complete test). So the far end
+  /// is the nearest of these where the new vectors are below the tolerance:
+  /// - the last bracket's far end;
+  /// - after a restart at an iterate where F was well above zero (the secant landed short:
+  ///   the creep above), where the exact distances of the last two complete tests
+  ///   extrapolate to the tolerance (a secant on the distance). The distance bends towards
+  ///   contact there, so this lies past the contact, where F < 0. (Where the restart came at
+  ///   F's root, as under linear motion, it would lie short: not tried.)
+  BrentStepper<S> bracket() {
+    const S distanceAtTa = last_.distanceAtStart;
+    S high = t1_, fHigh = std::min(approximateMaxSdAtT1() - tol_, S(0));
+    tryNearerFarEnd(previousHigh_, high, fHigh);
+    if (creeping_ && distanceBefore_ > distanceAtTa)
+      tryNearerFarEnd(ta_ + (distanceAtTa - tol_) * ((ta_ - taBefore_) / (distanceBefore_ - distanceAtTa)), high,
+                      fHigh);
+    return BrentStepper<S>(ta_, distanceAtTa - tol_, high, fHigh, timeTolerance_);
+  }
+
+  /// Makes t the bracket's far end (`high`, with F there in `fHigh`) if it lies inside
+  /// \f$(t_a, \mathrm{high})\f$ and F is negative there.
+  void tryNearerFarEnd(S t, S& high, S& fHigh) {
+    if (!(t > ta_ && t < high)) return;
+    const S f = approximateMaxSd(P_.at(t), Q_.at(t), t) - tol_;
+    if (f < S(0)) {
+      high = t;
+      fHigh = f;
+    }
+  }
+
+  /// The Brent step: the next iterate \f$t_x\f$, the bodies placed there, and the approximate
+  /// maximum SD there. "Positive" means at least the tolerance (\f$F(t_x) \ge 0\f$), not merely
+  /// above 0: only then are the bodies proven no closer than the tolerance on all of
+  /// \f$[t_a, t_x]\f$ (see the file comment). Records the step in the trace.
+  BrentIterate brentStep(const BrentStepper<S>& brent) {
+    const S tx = brent.next();
+    ++result_.brentIterations;
+    BrentIterate x{tx, P_.at(tx), Q_.at(tx)};
+    x.approximateMaxSd = approximateMaxSd(x.P, x.Q, tx);
+    x.separates = x.approximateMaxSd >= tol_;
+    if (trace_)
+      trace_->steps.push_back(ToiStep<S>{tx, x.approximateMaxSd, ta_, std::max(brent.root(), brent.counterpart()),
+                                         brent.nextKind(), x.separates});
+    return x;
+  }
+
+  /// The restart at \f$t_x\f$: the complete test there failed again, so Brent starts afresh on
+  /// \f$[t_x, t_1]\f$ with its vectors and its exact distance at \f$t_x\f$. Remembers the last
+  /// bracket's far end, the last complete test's start and distance, and whether F was well
+  /// above zero at \f$t_x\f$ (a creeping secant), for the next bracket.
+  void restartAt(const BrentIterate& x, const BrentStepper<S>& brent, ExtrusionResult<S>&& test) {
+    previousHigh_ = std::max(brent.root(), brent.counterpart());
+    taBefore_ = ta_;
+    distanceBefore_ = last_.distanceAtStart;
+    creeping_ = x.approximateMaxSd - tol_ > tol_;
+    ta_ = x.t;
+    last_ = std::move(test);
+  }
+
+  /// The verdict of a complete test on \f$[t_x, t_1]\f$ that did not fail: a photo finish if it
+  /// succeeded, a hit at \f$t_x\f$ if the bodies are within the tolerance there.
+  ToiResult<S> verdictAt(S tx, const ExtrusionResult<S>& test) {
+    switch (test.status) {
+      case ExtrusionStatus::NoCollision: return photoFinish();
+      case ExtrusionStatus::CollidingAtStart: return hit(tx, test);  // exact distance at tx within the tolerance
+      case ExtrusionStatus::NumericalFailure: result_.status = ToiStatus::NumericalFailure; return result_;
+      case ExtrusionStatus::IterationCap: return iterationCap();
+      case ExtrusionStatus::Undecided: break;  // not a verdict: solve() restarts at tx
+    }
+    return result_;
+  }
+
+  /// The photo finish: no collision, proven on the chain \f$[t_0, t_{x1}], \dots, [t_{xn}, t_1]\f$
+  /// (each link but the last by a stored vector, the last by the complete test that succeeded).
+  ToiResult<S> photoFinish() {
+    result_.status = ToiStatus::PhotoFinish;
+    return result_;
+  }
+
+  /// The hit: the bodies come within the tolerance at `time`, with the contact data of the
+  /// complete test there.
+  ToiResult<S> hit(S time, const ExtrusionResult<S>& test) {
+    result_.status = ToiStatus::Hit;
+    takeContact(result_, time, test);
+    return result_;
+  }
+
+  /// The hit when Brent's bracket \f$[t_a, t_b]\f$ is within the time tolerance: \f$t_b\f$ if the
+  /// stored vectors still prove the bodies apart there (approximate maximum SD > 0) and a
+  /// complete test finds the exact distance there within the tolerance (the paper's "its
+  /// maximum supporting distance is positive and smaller than the collision tolerance");
+  /// otherwise \f$t_a\f$, the last time proven free of contact, where the distance exceeds the
+  /// tolerance by at most what the bodies move in one time tolerance.
+  ToiResult<S> hitOnConvergedBracket(const BrentStepper<S>& brent) {
+    const S tb = brent.root() == ta_ ? brent.counterpart() : brent.root();
+    if (tb > ta_) {  // the stored vectors are never empty here (solve() checked)
+      const PlacedP Pb = P_.at(tb);
+      const PlacedQ Qb = Q_.at(tb);
+      if (approximateMaxSd(Pb, Qb, tb) > S(0)) {
+        const ExtrusionResult<S> atEnd = completeTest(Pb, Qb, tb);
+        if (atEnd.status == ExtrusionStatus::CollidingAtStart) return hit(tb, atEnd);
+      }
+    }
+    return hit(ta_, last_);
+  }
+
+  /// Out of iterations (Brent's or GJK's): undecided, reported at the last time proven free
+  /// of contact, \f$t_a\f$.
+  ToiResult<S> iterationCap() {
+    result_.status = ToiStatus::IterationCap;
+    takeContact(result_, ta_, last_);
+    return result_;
+  }
+
+  /// The moving body P.
+  const MovingP& P_;
+  /// The moving body Q.
+  const MovingQ& Q_;
+  /// The start of the interval.
+  S t0_;
+  /// The end of the interval, where every complete test ends.
+  S t1_;
+  /// The caller's settings.
+  const ToiSettings<S>& settings_;
+  /// The caller's trace, or null.
+  ToiTrace<S>* trace_;
+  /// The collision tolerance.
+  S tol_;
+  /// P's acceleration bound (for the certified margin).
+  S accelerationP_;
+  /// Q's acceleration bound.
+  S accelerationQ_;
+  /// Brent's time tolerance: the settings' fraction of \f$t_1 - t_0\f$.
+  S timeTolerance_;
+  /// The settings of every complete test.
+  ExtrusionSettings<S> extrusion_;
+  /// Every complete test after the first starts where the last one ended (speed): GJK from
+  /// the last simplex, its supports re-asked at the new time (GjkCache), and the searches
+  /// at \f$t_1\f$ from the last vertices found there. The restarts of §5 come at times ever
+  /// closer to the contact, where the closest features change little, so the warm GJK
+  /// needs a couple of iterations where a cold one needs five or more. The verdicts are
+  /// those of cold tests: GJK converges to the same tolerance from either start.
+  ExtrusionCache<S> cache_;
+  /// P at \f$t_1\f$, placed once (speed: a pose under rotation costs a sine and a cosine).
+  PlacedP P1_;
+  /// Q at \f$t_1\f$, placed once.
+  PlacedQ Q1_;
+  /// What the solver found so far: the counters, then the verdict.
+  ToiResult<S> result_;
+  /// \f$t_a\f$: the start of the last complete test, the last time proven free of contact.
+  S ta_;
+  /// The last complete test, on \f$[t_a, t_1]\f$: its exact distance at \f$t_a\f$ and its stored
+  /// vectors, which define F (their hints change as they are used).
+  ExtrusionResult<S> last_;
+  /// The far end of the last Brent bracket, where F was negative.
+  S previousHigh_;
+  /// The start of the complete test before the last...
+  S taBefore_;
+  /// ...and its exact distance there.
+  S distanceBefore_ = S(0);
+  /// True when the last restart came at an iterate where F was more than the tolerance above 0.
+  bool creeping_ = false;
+};
+
 }  // namespace detail
 
 /// Non-collision or the time of impact of two moving bodies over \f$[t_0, t_1]\f$ (§5); see
@@ -203,215 +532,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   using S = typename MovingP::Scalar;
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
-  const S tol = settings.collisionTolerance;
-  const S accelerationP = S(P.accelerationBound()), accelerationQ = S(Q.accelerationBound());
-  const S accelerationBound = accelerationP + accelerationQ;
-  ExtrusionSettings<S> extrusion;
-  extrusion.collisionTolerance = tol;
-  extrusion.variant = settings.variant;
-  extrusion.gjk = settings.gjk;
-
-  ToiResult<S> result;
-  // Every complete test after the first starts where the last one ended (speed): GJK
-  // from the last simplex, its supports re-asked at the new time (GjkCache), and the
-  // searches at t1 from the last vertices found there. The restarts of §5 come at times
-  // ever closer to the contact, where the closest features change little, so the warm
-  // GJK needs a couple of iterations where a cold one needs five or more. The verdicts
-  // are those of cold tests: GJK converges to the same tolerance from either start.
-  ExtrusionCache<S> cache;
-  // Every test ends at t1, where the bodies are placed once. A test at ta takes the bodies
-  // placed at ta from its caller, who has usually just placed them there to evaluate the
-  // approximate maximum SD (speed: a pose under rotation costs a sine and a cosine).
-  const auto P1 = P.at(t1);
-  const auto Q1 = Q.at(t1);
-  auto completeTest = [&](const auto& Pa, const auto& Qa, S ta) {
-    const S margin = extrusionMargin(settings.variant, t1 - ta, accelerationP, accelerationQ);
-    ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1, Q1, margin, extrusion, &cache);
-    ++result.gjkRuns;
-    result.sdEvaluations += test.sdEvaluations;
-    if (trace) trace->intervals.push_back({ta, test.status, test.distanceAtStart, test.separating});
-    return test;
-  };
-
-  // The first test over the whole interval.
-  S ta = t0;
-  ExtrusionResult<S> test = completeTest(P.at(t0), Q.at(t0), ta);
-  switch (test.status) {
-    case ExtrusionStatus::NoCollision:
-      result.status = ToiStatus::NoCollision;
-      return result;
-    case ExtrusionStatus::NumericalFailure:
-      result.status = ToiStatus::NumericalFailure;
-      return result;
-    case ExtrusionStatus::IterationCap:
-      result.status = ToiStatus::IterationCap;
-      result.time = t0;
-      return result;
-    case ExtrusionStatus::CollidingAtStart: {
-      // Within the tolerance at t0. Along the closest direction n, the supporting distance
-      // is at least its chord less the margin's parabola (certified_margin.hpp; linear and
-      // per-vertex linear motion: less nothing). If that stays positive and it rises, the
-      // bodies never touch: they are moving apart.
-      detail::takeContact(result, t0, test);
-      bool apart = false;
-      if (result.distance > S(0) && result.normal.squaredNorm() > S(0)) {
-        const S sd0 = supportingDistanceAt(P, Q, result.normal, t0);
-        const S sd1 = supportingDistanceAt(P, Q, result.normal, t1);
-        result.sdEvaluations += 2;
-        apart = sd0 > S(0) && sd1 >= sd0 &&
-                lowestSupportingDistance(settings.variant, sd0, sd1, t1 - t0, accelerationP, accelerationQ) > S(0);
-      }
-      result.status = apart ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
-      return result;
-    }
-    case ExtrusionStatus::Undecided: break;
-  }
-
-  // Brent on F(t) over [ta, t1], restarted on [tx, t1] after each complete test.
-  const S timeTolerance = settings.timeTolerance * (t1 - t0);
-  ExtrusionResult<S>& lastTest = test;           // the complete test at ta
-  SeparatingVectors<S>& vectors = test.separating;  // its vectors (their hints change as they are used)
-  S distanceAtTa = test.distanceAtStart;
-  // The approximate maximum supporting distance at t from the stored vectors (§5). The
-  // certified variant counts a vector only as far as it separates at both ta and t, less
-  // the margin over [ta, t]: positive then proves [ta, t] free of contact.
-  const bool certified = settings.variant == ExtrusionVariant::Certified;
-  auto marginOver = [&](S duration) { return certified ? duration * duration / S(8) * accelerationBound : S(0); };
-  // Each vector's support searches start where its last ones ended (its hints): the
-  // bodies have moved little since, and the climbs are short (speed).
-  auto approximateMaxSdOf = [&](const auto& Pt, const auto& Qt, S t) {
-    S best = -std::numeric_limits<S>::infinity();
-    for (int k = 0; k < vectors.count; ++k) {
-      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k], vectors.hintP[k], vectors.hintQ[k]);
-      best = std::max(best, certified ? std::min(sd, vectors.sdStart[k]) : sd);
-    }
-    result.sdEvaluations += vectors.count;
-    return best - marginOver(t - ta);
-  };
-  auto approximateMaxSd = [&](S t) { return approximateMaxSdOf(P.at(t), Q.at(t), t); };
-  // The same at t1, from the values the complete test stored.
-  auto approximateMaxSdAtEnd = [&] {
-    S best = -std::numeric_limits<S>::infinity();
-    for (int k = 0; k < vectors.count; ++k)
-      best = std::max(best, certified ? std::min(vectors.sdEnd[k], vectors.sdStart[k]) : vectors.sdEnd[k]);
-    return best - marginOver(t1 - ta);
-  };
-
-  S previousHigh = t1;      // the far end of the last Brent bracket, where F was negative
-  S taBefore = t0;          // the complete test before the one at ta...
-  S distanceBefore = S(0);  // ...and its distance
-  bool creeping = false;    // the last restart came at an iterate where F was more than tol above 0
-  for (;;) {
-    // No stored vector separates at ta by the tolerance (GJK's own gap can leave the
-    // distance just above tol with every SD just below it): nothing beyond ta can be
-    // proven, and ta, where the distance is within round-off of tol, is the time of impact.
-    if (vectors.count == 0) {
-      result.status = ToiStatus::Hit;
-      detail::takeContact(result, ta, lastTest);
-      return result;
-    }
-    // F(ta) = exact distance - tol > 0; F(t1) = approximate max SD at t1 - margin - tol <= 0.
-    // Brent's history is lost on a restart, and a first secant towards t1 creeps like
-    // regula falsi where F bends away from the chord (accelerating or turning bodies:
-    // each secant lands short, F is above the tolerance there, and every restart costs a
-    // complete test). So the bracket's far end is the nearest of these where the new
-    // vectors are below the tolerance:
-    // - the last bracket's far end;
-    // - after a restart at an iterate where F was well above zero (the secant landed
-    //   short: the creep above), where the exact distances of the last two complete tests
-    //   extrapolate to the tolerance (a secant on the distance). The distance bends
-    //   towards contact there, so this lies past the contact, where F < 0. (Where the
-    //   restart came at F's root, as under linear motion, it would lie short: not tried.)
-    const S fLow = distanceAtTa - tol;
-    S high = t1, fHigh = std::min(approximateMaxSdAtEnd() - tol, S(0));
-    auto tryHigh = [&](S t) {
-      if (!(t > ta && t < high)) return;
-      const S f = approximateMaxSd(t) - tol;
-      if (f < S(0)) {
-        high = t;
-        fHigh = f;
-      }
-    };
-    tryHigh(previousHigh);
-    if (creeping && distanceBefore > distanceAtTa)
-      tryHigh(ta + (distanceAtTa - tol) * ((ta - taBefore) / (distanceBefore - distanceAtTa)));
-    BrentStepper<S> brent(ta, fLow, high, fHigh, timeTolerance);
-    bool restarted = false;
-    while (!restarted) {
-      if (brent.converged()) {
-        // The contact time is bracketed within the time tolerance between ta, the last time
-        // proven free of contact, and tb, where F < 0. If the stored vectors still prove the
-        // bodies apart at tb (approximate maximum SD > 0) and the exact distance there is
-        // within the tolerance, tb is the paper's time of impact ("its maximum supporting
-        // distance is positive and smaller than the collision tolerance"). Otherwise ta is,
-        // where the distance exceeds tol by at most what the bodies move in one time tolerance.
-        result.status = ToiStatus::Hit;
-        const S tb = brent.root() == ta ? brent.counterpart() : brent.root();
-        if (tb > ta && vectors.count > 0) {
-          const auto Pb = P.at(tb);
-          const auto Qb = Q.at(tb);
-          if (approximateMaxSdOf(Pb, Qb, tb) > S(0)) {
-            const ExtrusionResult<S> atEnd = completeTest(Pb, Qb, tb);
-            if (atEnd.status == ExtrusionStatus::CollidingAtStart) {
-              detail::takeContact(result, tb, atEnd);
-              return result;
-            }
-          }
-        }
-        detail::takeContact(result, ta, lastTest);
-        return result;
-      }
-      if (result.brentIterations >= settings.maxIterations) {
-        result.status = ToiStatus::IterationCap;
-        detail::takeContact(result, ta, lastTest);
-        return result;
-      }
-      const S tx = brent.next();
-      ++result.brentIterations;
-      const auto Px = P.at(tx);
-      const auto Qx = Q.at(tx);
-      const S approx = vectors.count > 0 ? approximateMaxSdOf(Px, Qx, tx) : S(0);
-      // "Positive" means at least the tolerance (F(tx) >= 0), not merely above 0: only then
-      // are the bodies proven no closer than the tolerance on all of [ta, tx] (see the
-      // file comment). Between 0 and tol, Brent goes on with F(tx) < 0.
-      const bool separates = approx >= tol;
-      ToiStep<S> step{tx, approx, ta, std::max(brent.root(), brent.counterpart()), brent.nextKind(), separates};
-      if (trace) trace->steps.push_back(step);
-      if (!separates) {  // no stored vector separates at tx by the tolerance; keep iterating
-        brent.update(approx - tol);
-        continue;
-      }
-      // At least the tolerance: [ta, tx] is free of contact; the complete test on [tx, t1] decides.
-      ++result.restarts;
-      ExtrusionResult<S> next = completeTest(Px, Qx, tx);
-      switch (next.status) {
-        case ExtrusionStatus::NoCollision:
-          result.status = ToiStatus::PhotoFinish;
-          return result;
-        case ExtrusionStatus::CollidingAtStart:  // exact distance at tx within the tolerance
-          result.status = ToiStatus::Hit;
-          detail::takeContact(result, tx, next);
-          return result;
-        case ExtrusionStatus::NumericalFailure:
-          result.status = ToiStatus::NumericalFailure;
-          return result;
-        case ExtrusionStatus::IterationCap:
-          result.status = ToiStatus::IterationCap;
-          detail::takeContact(result, ta, lastTest);
-          return result;
-        case ExtrusionStatus::Undecided:
-          previousHigh = std::max(brent.root(), brent.counterpart());
-          taBefore = ta;
-          distanceBefore = distanceAtTa;
-          creeping = approx - tol > tol;
-          ta = tx;
-          distanceAtTa = next.distanceAtStart;
-          lastTest = std::move(next);  // and with it `vectors`
-          restarted = true;
-          break;
-      }
-    }
-  }
+  return detail::ToiSolver<MovingP, MovingQ>(P, Q, t0, t1, settings, trace).solve();
 }
 
 }  // namespace gjkx
