@@ -5,7 +5,7 @@
 //
 // Every run, whatever the case, must end with a status, within maxIterations, with no
 // NaN, and not at the iteration cap (checkEnds).
-#include "brute_force.hpp"
+#include "to_reference.hpp"
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -77,26 +77,9 @@ Matrix3<S> randomRotation(std::mt19937& rng) {
   return q.normalized().toRotationMatrix().cast<S>();
 }
 
-// Distance from x to the box [-h, h] (long double).
-inline Real pointBoxDistance(const RVec& x, const RVec& h) {
-  RVec out;
-  for (int k = 0; k < 3; ++k) out[k] = std::max(Real(0), std::abs(x[k]) - h[k]);
-  return out.norm();
-}
-
-// Distance from the segment [a, b] to the box [-h, h]: the distance along the segment
-// is convex in the parameter, so a ternary search finds its minimum.
-inline Real segmentBoxDistance(const RVec& a, const RVec& b, const RVec& h) {
-  Real lo = 0, hi = 1;
-  for (int it = 0; it < 200; ++it) {
-    const Real m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (pointBoxDistance(a + m1 * (b - a), h) < pointBoxDistance(a + m2 * (b - a), h))
-      hi = m2;
-    else
-      lo = m1;
-  }
-  return pointBoxDistance(a + (lo + hi) / 2 * (b - a), h);
-}
+// Distances to a box [-h, h] from the reference library (gjkx/reference/closest_points.hpp).
+using reference::pointBoxDistance;
+using reference::segmentBoxDistance;
 
 // A support mapping that returns NaN (or infinity): a broken shape GJK must report.
 template <typename S>

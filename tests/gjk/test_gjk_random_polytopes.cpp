@@ -1,14 +1,14 @@
 // GJK on random convex polytope pairs against brute force (§2.2).
 //
 // Each pair is two hulls of 4 to 60 random points (on or in spheres and ellipsoids) at
-// random poses, some apart and some overlapping. The reference (brute_force.hpp) is
+// random poses, some apart and some overlapping. The reference (gjkx/reference) is
 // computed in long double from the very numbers GJK sees: overlap by a separating-axis
 // test over face normals and edge-edge cross products, distance as the nearest of all
 // vertex-triangle, triangle-vertex and edge-edge pairs. A Separated answer must also
 // satisfy the optimality condition of the closest-distance problem: along
 // z = witnessQ - witnessP the supporting planes of P and Q are exactly |z| apart
 // (SD(P, Q, z) = |z|, §2.3), with the witnesses on their shapes.
-#include "brute_force.hpp"
+#include "to_reference.hpp"
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -102,12 +102,12 @@ struct Truth {
 };
 
 template <typename S>
-Truth truthOf(const test::WorldPolytope& P, const test::WorldPolytope& Q) {
+Truth truthOf(const reference::WorldPolytope& P, const reference::WorldPolytope& Q) {
   Truth t;
   for (const RVec& v : P.vertices) t.size = std::max(t.size, v.cwiseAbs().maxCoeff());
   for (const RVec& v : Q.vertices) t.size = std::max(t.size, v.cwiseAbs().maxCoeff());
-  const Real gap = test::separatingAxisGap(P, Q);
-  const test::FeatureDistance boundary = test::boundaryDistance(P, Q);
+  const Real gap = reference::separatingAxisGap(P, Q);
+  const reference::FeatureDistance boundary = reference::boundaryDistance(P, Q);
   t.overlapping = !(gap > 0);
   t.distance = t.overlapping ? Real(0) : boundary.distance;
   // Either reference alone could be fooled by a near contact; flag those.
@@ -120,7 +120,7 @@ Truth truthOf(const test::WorldPolytope& P, const test::WorldPolytope& Q) {
 }
 
 // SD(P, Q, s) = min_Q s.q - max_P s.p for a unit s (§2.3), over the world vertices.
-inline Real supportingDistance(const test::WorldPolytope& P, const test::WorldPolytope& Q, const RVec& s) {
+inline Real supportingDistance(const reference::WorldPolytope& P, const reference::WorldPolytope& Q, const RVec& s) {
   const RVec unit = s.normalized();
   return -Q.supportValue(-unit) - P.supportValue(unit);
 }
@@ -145,7 +145,7 @@ void checkWellFormed(const GjkResult<S>& r, const GjkSettings<S>& settings = {})
 // eps * size / |z|, which in float and at |z| = size / 300 moves SD by more than the
 // tolerance (KKT along it failed by 2.4e-4 where SD(z) - |z| was 2e-8).
 template <typename S>
-void checkOptimality(const GjkResult<S>& r, const test::WorldPolytope& P, const test::WorldPolytope& Q, Real size) {
+void checkOptimality(const GjkResult<S>& r, const reference::WorldPolytope& P, const reference::WorldPolytope& Q, Real size) {
   const Real tol = tolerance<S>() * size;
   const RVec p = test::toReal(r.witnessP), q = test::toReal(r.witnessQ);
   const RVec z = test::toReal(r.z);
@@ -197,7 +197,7 @@ TEMPLATE_TEST_CASE("gjk: random polytope pairs match the brute-force distance", 
   int apart = 0, inside = 0, near = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const RandomPair<S> pair = randomPair<S>(rng);
-    const test::WorldPolytope P = test::toWorld(pair.P, pair.poseP), Q = test::toWorld(pair.Q, pair.poseQ);
+    const reference::WorldPolytope P = test::toWorld(pair.P, pair.poseP), Q = test::toWorld(pair.Q, pair.poseQ);
     const Truth truth = truthOf<S>(P, Q);
     const GjkResult<S> r = gjk(place(pair.P, pair.poseP), place(pair.Q, pair.poseQ));
     INFO("trial " << trial << " (" << pair.P.vertexCount() << " and " << pair.Q.vertexCount()
@@ -270,7 +270,7 @@ TEMPLATE_TEST_CASE("gjk: warm start on small pose changes gives the cold distanc
       const GjkResult<S> c = gjk(Counted<decltype(P)>{&P, &coldCalls}, Counted<decltype(Q)>{&Q, &coldCalls});
       const GjkResult<S> w =
           gjk(Counted<decltype(P)>{&P, &warmCalls}, Counted<decltype(Q)>{&Q, &warmCalls}, {}, &cache);
-      const test::WorldPolytope wP = test::toWorld(shapeP, poseP), wQ = test::toWorld(shapeQ, poseQ);
+      const reference::WorldPolytope wP = test::toWorld(shapeP, poseP), wQ = test::toWorld(shapeQ, poseQ);
       Real scale = 1;
       for (const RVec& v : wP.vertices) scale = std::max(scale, v.cwiseAbs().maxCoeff());
       for (const RVec& v : wQ.vertices) scale = std::max(scale, v.cwiseAbs().maxCoeff());
@@ -341,7 +341,7 @@ TEMPLATE_TEST_CASE("gjk: warm start on large and small pose changes agrees with 
       const auto Q = place(shapeQ, poseQ);
       const GjkResult<S> c = gjk(P, Q);
       const GjkResult<S> w = gjk(P, Q, {}, &cache);
-      const test::WorldPolytope wP = test::toWorld(shapeP, poseP), wQ = test::toWorld(shapeQ, poseQ);
+      const reference::WorldPolytope wP = test::toWorld(shapeP, poseP), wQ = test::toWorld(shapeQ, poseQ);
       Real scale = 1;
       for (const RVec& v : wP.vertices) scale = std::max(scale, v.cwiseAbs().maxCoeff());
       for (const RVec& v : wQ.vertices) scale = std::max(scale, v.cwiseAbs().maxCoeff());

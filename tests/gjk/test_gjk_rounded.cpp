@@ -7,7 +7,7 @@
 // radii. And what the result says must hold together: the witnesses lie on the surfaces,
 // they differ by z, the lower bound is a lower bound, the status says overlap exactly when
 // the reference does (outside a round-off band).
-#include "brute_force.hpp"
+#include "to_reference.hpp"
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/gjk/trace.hpp>
@@ -34,46 +34,11 @@ Real tolerance() {
   return sizeof(S) == sizeof(float) ? Real(2e-5) : Real(1e-12);
 }
 
-// Closest distance from x to the segment [a, b].
-Real pointSegment(const RVec& x, const RVec& a, const RVec& b) {
-  const RVec t = b - a;
-  const Real tt = t.squaredNorm();
-  const Real u = tt > 0 ? std::clamp((x - a).dot(t) / tt, Real(0), Real(1)) : Real(0);
-  return (a + u * t - x).norm();
-}
-
-// Closest distance between segments [a, b] and [c, d]: the distance from a point of the
-// first to the second is convex in its parameter, so a ternary search finds the minimum.
-Real segmentSegment(const RVec& a, const RVec& b, const RVec& c, const RVec& d) {
-  Real lo = 0, hi = 1;
-  for (int it = 0; it < 200; ++it) {
-    const Real m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (pointSegment(a + m1 * (b - a), c, d) < pointSegment(a + m2 * (b - a), c, d))
-      hi = m2;
-    else
-      lo = m1;
-  }
-  return pointSegment(a + (lo + hi) / 2 * (b - a), c, d);
-}
-
-// Distance from x (in the box's frame) to the box [-h, h].
-Real pointBox(const RVec& x, const RVec& h) {
-  RVec out;
-  for (int k = 0; k < 3; ++k) out[k] = std::max(Real(0), std::abs(x[k]) - h[k]);
-  return out.norm();
-}
-
-Real segmentBox(const RVec& a, const RVec& b, const RVec& h) {
-  Real lo = 0, hi = 1;
-  for (int it = 0; it < 200; ++it) {
-    const Real m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (pointBox(a + m1 * (b - a), h) < pointBox(a + m2 * (b - a), h))
-      hi = m2;
-    else
-      lo = m1;
-  }
-  return pointBox(a + (lo + hi) / 2 * (b - a), h);
-}
+// The exact distances of the reference library (gjkx/reference/closest_points.hpp).
+using reference::pointBoxDistance;
+using reference::pointSegmentDistance;
+using reference::segmentBoxDistance;
+using reference::segmentSegmentDistance;
 
 template <typename S>
 RVec world(const Pose<S>& pose, const Vector3<S>& x) {
@@ -131,19 +96,19 @@ TEMPLATE_TEST_CASE("rounded: spheres and capsules against a closed form", "[gjk]
     CHECK(ss.iterations <= 2);  // two points: one support query each, then converged
 
     const auto sc = gjk(place(sphereP, poseP), place(capsuleQ, poseQ));
-    checkAgainst(sc, pointSegment(cP, aQ, bQ) - Real(sphereP.radius) - Real(capsuleQ.radius), scale);
+    checkAgainst(sc, pointSegmentDistance(cP, aQ, bQ) - Real(sphereP.radius) - Real(capsuleQ.radius), scale);
 
     const auto cc = gjk(place(capsuleP, poseP), place(capsuleQ, poseQ));
-    checkAgainst(cc, segmentSegment(aP, bP, aQ, bQ) - Real(capsuleP.radius) - Real(capsuleQ.radius), scale);
+    checkAgainst(cc, segmentSegmentDistance(aP, bP, aQ, bQ) - Real(capsuleP.radius) - Real(capsuleQ.radius), scale);
 
     // Against a box (not rounded: its core is itself), in the box's frame.
     const RVec h = test::toReal(box.halfExtents);
     const Matrix3<Real> Rq = poseQ.rotation.template cast<Real>();
     auto inBox = [&](const RVec& x) { RVec y = Rq.transpose() * (x - test::toReal(poseQ.translation)); return y; };
     const auto sb = gjk(place(sphereP, poseP), place(box, poseQ));
-    checkAgainst(sb, pointBox(inBox(cP), h) - Real(sphereP.radius), scale);
+    checkAgainst(sb, pointBoxDistance(inBox(cP), h) - Real(sphereP.radius), scale);
     const auto cb = gjk(place(capsuleP, poseP), place(box, poseQ));
-    checkAgainst(cb, segmentBox(inBox(aP), inBox(bP), h) - Real(capsuleP.radius), scale);
+    checkAgainst(cb, segmentBoxDistance(inBox(aP), inBox(bP), h) - Real(capsuleP.radius), scale);
 
     for (const auto* r : {&ss, &sc, &cc, &sb, &cb}) {
       (r->status == GjkStatus::Separated ? separated : overlapping) += 1;
@@ -197,7 +162,7 @@ TEMPLATE_TEST_CASE("rounded: a run-time Shape, a warm start, a boolean query and
   for (int step = 0; step <= 300; ++step) {
     const S x = S(-1.5) + S(0.01) * S(step);
     const Pose<S> poseQ = Pose<S>::translate({x, S(0.3), S(0.5)});
-    const Real truth = pointSegment(test::toReal(poseQ.translation), RVec(0, 0, -1), RVec(0, 0, 1)) - Real(0.75);
+    const Real truth = pointSegmentDistance(test::toReal(poseQ.translation), RVec(0, 0, -1), RVec(0, 0, 1)) - Real(0.75);
     INFO("step " << step << ", x = " << x);
     // The concrete types, the run-time Shape, and a warm start all give the same answer.
     const auto concrete = gjk(place(capsule, Pose<S>::identity()), place(sphere, poseQ));

@@ -5,8 +5,8 @@
 // degenerate ones where Johnson's sub-algorithm is known to fail (coincident ends,
 // collinear triangle, flat tetrahedron, sliver triangle, needle tetrahedron, thin
 // triangles), then a randomized property test. Every result is also held to an independent brute-force closest point
-// (brute_force.hpp: every sub-simplex projected by least squares in long double).
-#include "brute_force.hpp"
+// (gjkx::reference::closestToOrigin: every sub-simplex projected by least squares in long double).
+#include "to_reference.hpp"
 
 #include <gjkx/gjk/simplex.hpp>
 
@@ -86,7 +86,7 @@ std::vector<int> checkWellFormed(const std::vector<Vector3<S>>& points, const Si
 template <typename S>
 void checkAgainstBruteForce(const std::vector<Vector3<S>>& points, const Simplex<S>& simplex, Real tolerance,
                             Real pointTolerance, Real* worstDistanceError = nullptr) {
-  const test::ClosestPoint ref = test::closestToOrigin(points);
+  const reference::HullPoint ref = test::closestToOrigin(points);
   Real scale = 0;
   for (const auto& w : points) scale = std::max(scale, test::toReal(w).norm());
   if (scale == 0) scale = 1;
