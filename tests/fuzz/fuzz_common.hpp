@@ -13,18 +13,12 @@
 // an empty interval) end the run quietly: refusing bad input is a correct answer.
 //
 // The reference. Every shape here is a convex hull of a few points plus a ball of
-// radius r (a sphere is one point and r, a capsule two points and r). For two such
-// bodies and any unit vector s the supporting distance
-//     SD(s) = min_b s.b - max_a s.a - rA - rB
-// is a lower bound of the signed distance (distance when apart, minus the penetration
-// depth when overlapping), and the signed distance is its maximum over s. That maximum
-// is attained at one of finitely many directions, which the reference tries *all* of:
-// the directions between the closest points of every feature pair (vertex-vertex,
-// vertex-edge, vertex-triangle and edge-edge, features taken over all pairs and
-// triples of points, so the hull's faces are among them) for the disjoint case, and
-// every triangle normal and every edge-edge cross product (the separating-axis
-// candidates) for the overlapping case. Nothing of the library's GJK or simplex code is
-// used, and it runs in long double.
+// radius r (a sphere is one point and r, a capsule two points and r): a
+// gjkx::reference::Cloud, whose signed distance (distance when apart, minus the
+// penetration depth when overlapping) the reference library computes by brute force in
+// long double (gjkx/reference/polytope_distance.hpp: every candidate direction of the
+// supporting distance, every feature pair's closest points). Nothing of the library's GJK
+// or simplex code is used; this file only turns the decoded bodies into clouds.
 //
 // Tolerances. A result is compared with the reference within
 //     slack = 1000 * eps(S) * R   (+ 16 x GJK's relative tolerance times the distance)
@@ -40,6 +34,7 @@
 #include <gjkx/brent/time_of_impact.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/support_mapping/shape.hpp>
@@ -60,8 +55,10 @@
 
 namespace gjkx::fuzz {
 
-using Real = long double;
-using RVec = Eigen::Matrix<Real, 3, 1>;
+using Real = reference::Real;
+using RVec = reference::Vec;
+using reference::Cloud;
+using reference::signedDistance;
 
 /// How many round-offs of the coordinates a result may be off by (GJKX_FUZZ_SLACK overrides).
 inline Real slackFactor() {
@@ -302,18 +299,6 @@ S accelerationBound(const Body<S>& body) {
 // ---------------------------------------------------------------------------------------
 // The reference: a body as points plus a radius, in long double.
 
-/// conv(points) + ball(radius), in the world.
-struct Cloud {
-  std::vector<RVec> points;
-  Real radius = 0;
-  /// The largest |point| + radius: the scale of the coordinates.
-  Real extent() const {
-    Real r = 0;
-    for (const auto& p : points) r = std::max(r, p.norm());
-    return r + radius;
-  }
-};
-
 /// A cloud as text, for the context of a violation.
 inline std::string describe(const Cloud& c) {
   std::string text = "{";
@@ -384,187 +369,6 @@ template <typename S>
 Cloud cloudAt(const Body<S>& body, S t) {
   if (const auto* m = std::get_if<Moving<Shape<S>>>(&body)) return cloudOf(m->shape, m->motion.pose(t));
   return cloudOf(std::get<DeformingSimplex<S>>(body).at(t));
-}
-
-namespace detail {
-
-inline RVec closestOnSegment(const RVec& x, const RVec& a, const RVec& b) {
-  const RVec ab = b - a;
-  const Real len2 = ab.squaredNorm();
-  if (!(len2 > 0)) return a;
-  const Real u = std::clamp((x - a).dot(ab) / len2, Real(0), Real(1));
-  return a + u * ab;
-}
-
-// The normal (b - a) x (c - a) of triangle abc, from the two edges at its largest angle:
-// on a needle (two edges 2.7e5 long, one 1e-4) the cross product of the two long edges
-// cancels to a direction off by 3e-10, which moved the SD along it by 8e-5 (a fuzz
-// finding, in the reference); the other pairs are the same vector without the cancellation.
-inline RVec normalOf(const RVec& a, const RVec& b, const RVec& c) {
-  const Real ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
-  if (bc >= ab && bc >= ca) return (b - a).cross(c - a);  // largest angle at a
-  if (ca >= ab) return (c - b).cross(a - b);              // at b
-  return (a - c).cross(b - c);                            // at c
-}
-
-// Closest point of triangle abc to x when it is interior: the projection of x onto the
-// plane, kept when its three barycentric coordinates (signed areas against the normal)
-// are positive; nullopt otherwise, and for a degenerate triangle (the edges and vertices
-// are tried on their own). Each area is a cross product of two edges from a vertex, so on
-// a sliver (47000 long, 1e-7 wide) every term keeps its relative precision; Ericson's
-// region tests subtract products of dot products there (1.6e15 apart by less than their
-// round-off in long double) and took an interior point for one on an edge, which made
-// the reference distance twice the true one (a fuzz finding, in the reference).
-inline std::optional<RVec> closestOnTriangle(const RVec& x, const RVec& a, const RVec& b, const RVec& c) {
-  const RVec n = normalOf(a, b, c);
-  const Real nn = n.squaredNorm();
-  if (!(nn > 0)) return std::nullopt;
-  const RVec p = x - n * (n.dot(x - a) / nn);
-  const Real u = n.dot((c - b).cross(p - b)), v = n.dot((a - c).cross(p - c)), w = n.dot((b - a).cross(p - a));
-  if (u >= 0 && v >= 0 && w >= 0) return p;
-  return std::nullopt;
-}
-
-// Closest points of segments [p1,q1] and [p2,q2] (Ericson §5.1.9).
-inline void closestSegmentSegment(const RVec& p1, const RVec& q1, const RVec& p2, const RVec& q2, RVec& c1,
-                                  RVec& c2) {
-  const RVec d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const Real a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  Real s, t;
-  if (!(a > 0) && !(e > 0)) {
-    s = t = 0;
-  } else if (!(a > 0)) {
-    s = 0;
-    t = std::clamp(f / e, Real(0), Real(1));
-  } else {
-    const Real c = d1.dot(r);
-    if (!(e > 0)) {
-      t = 0;
-      s = std::clamp(-c / a, Real(0), Real(1));
-    } else {
-      const Real b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 0 ? std::clamp((b * f - c * e) / denom, Real(0), Real(1)) : Real(0);
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, Real(0), Real(1));
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, Real(0), Real(1));
-      }
-    }
-  }
-  c1 = p1 + d1 * s;
-  c2 = p2 + d2 * t;
-}
-
-struct Edge {
-  int i, j;
-};
-struct Tri {
-  int i, j, k;
-};
-inline std::vector<Edge> edgesOf(int n) {
-  std::vector<Edge> e;
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j) e.push_back({i, j});
-  return e;
-}
-inline std::vector<Tri> trianglesOf(int n) {
-  std::vector<Tri> t;
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j)
-      for (int k = j + 1; k < n; ++k) t.push_back({i, j, k});
-  return t;
-}
-
-}  // namespace detail
-
-/// The signed distance of two clouds (distance when apart, minus the penetration depth
-/// when overlapping), by trying every candidate direction (see the file comment).
-///
-/// The maximum supporting distance over the candidates is a lower bound and, for the
-/// separated case, the distance of the closest feature pair is an upper bound; both are
-/// the exact value at the right candidate. When the cores are apart the second is the
-/// one returned: a direction between two points 1e-8 apart carries an error of about
-/// eps / 1e-8, which tilts the supporting planes of a long feature (the max SD of a
-/// point 1.5e-8 from a unit segment came out 1e-12 short), while the distance of the
-/// two points themselves keeps full precision.
-inline Real signedDistance(const Cloud& A, const Cloud& B) {
-  using namespace detail;
-  const auto& a = A.points;
-  const auto& b = B.points;
-  const Real radii = A.radius + B.radius;
-  Real lower = -std::numeric_limits<Real>::infinity();  // max SD of the cores
-  Real upper = std::numeric_limits<Real>::infinity();   // min distance of two core points
-  auto tryDirection = [&](RVec s) {
-    const Real n = s.norm();
-    if (!(n > 0) || !std::isfinite(n)) return;
-    s /= n;
-    Real maxA = -std::numeric_limits<Real>::infinity(), minB = std::numeric_limits<Real>::infinity();
-    for (const auto& x : a) maxA = std::max(maxA, s.dot(x));
-    for (const auto& y : b) minB = std::min(minB, s.dot(y));
-    lower = std::max(lower, minB - maxA);
-  };
-  auto tryPair = [&](const RVec& p, const RVec& q) {
-    upper = std::min(upper, (q - p).norm());
-    tryDirection(q - p);
-  };
-  auto tryBoth = [&](const RVec& s) {
-    tryDirection(s);
-    tryDirection(-s);
-  };
-  for (int k = 0; k < 3; ++k) tryBoth(RVec::Unit(k));
-  const auto edgesA = edgesOf(int(a.size())), edgesB = edgesOf(int(b.size()));
-  const auto trisA = trianglesOf(int(a.size())), trisB = trianglesOf(int(b.size()));
-  // Disjoint: between the closest points of every feature pair.
-  for (const auto& x : a)
-    for (const auto& y : b) tryPair(x, y);
-  // A point and an edge: also the normal from the line to the point as a triple product,
-  // t x ((x - a) x t), which keeps its direction where the closest point does not (a
-  // point 4.4e-8 from an edge 47000 long: the closest point's error along the edge,
-  // 1e-16, tilted the direction by 2e-9 and the SD along it fell below zero).
-  auto tryPointEdge = [&](const RVec& x, const RVec& e0, const RVec& e1) {
-    const RVec t = e1 - e0;
-    tryBoth(t.cross((x - e0).cross(t)));
-  };
-  for (const auto& x : a)
-    for (const auto& e : edgesB) {
-      tryPair(x, closestOnSegment(x, b[e.i], b[e.j]));
-      tryPointEdge(x, b[e.i], b[e.j]);
-    }
-  for (const auto& y : b)
-    for (const auto& e : edgesA) {
-      tryPair(closestOnSegment(y, a[e.i], a[e.j]), y);
-      tryPointEdge(y, a[e.i], a[e.j]);
-    }
-  for (const auto& x : a)
-    for (const auto& t : trisB)
-      if (auto c = closestOnTriangle(x, b[t.i], b[t.j], b[t.k])) tryPair(x, *c);
-  for (const auto& y : b)
-    for (const auto& t : trisA)
-      if (auto c = closestOnTriangle(y, a[t.i], a[t.j], a[t.k])) tryPair(*c, y);
-  for (const auto& e : edgesA)
-    for (const auto& f : edgesB) {
-      RVec c1, c2;
-      closestSegmentSegment(a[e.i], a[e.j], b[f.i], b[f.j], c1, c2);
-      tryPair(c1, c2);
-      // Overlapping: the separating-axis candidates, edge x edge ...
-      tryBoth((a[e.j] - a[e.i]).cross(b[f.j] - b[f.i]));
-    }
-  // ... and face normals.
-  for (const auto& t : trisA) tryBoth(normalOf(a[t.i], a[t.j], a[t.k]));
-  for (const auto& t : trisB) tryBoth(normalOf(b[t.i], b[t.j], b[t.k]));
-  // Collinear edges: a direction normal to both is among the normals of an edge and
-  // any axis; try the edge direction crossed with the axes too.
-  for (const auto& e : edgesA)
-    for (int k = 0; k < 3; ++k) tryBoth((a[e.j] - a[e.i]).cross(RVec::Unit(k)));
-  // Apart: the distance is at least every SD (lower, rigorous) and at most every pair's
-  // distance (upper, rigorous only if each candidate point is in its set). Where a
-  // candidate point of a needle was computed off its feature, upper fell below a proven
-  // lower bound (1.49e-5 against an SD of 1.554e-5, checked in exact arithmetic; a fuzz
-  // finding, in the reference): the larger of the two is then the right one.
-  return (lower > 0 ? std::max(upper, lower) : lower) - radii;
 }
 
 /// The round-off scale of a pair of clouds in precision S.
