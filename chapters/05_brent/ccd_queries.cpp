@@ -30,6 +30,7 @@
 #include <vector>
 
 using namespace gjkx;
+namespace ccd = gjkx::study::ccd;  // the benchmark's file format and queries
 
 namespace {
 

@@ -6,16 +6,18 @@
 // advancement, the paper's solver and the certified one in double and float; the peers:
 // FCL continuousCollide naive and conservative advancement, Bullet
 // btContinuousConvexCollision, Box2D b2TimeOfImpact on the cases with a 2D form) on the ten
-// cases of extreme_cases.hpp, and every GJK method (ours in double and float, libccd GJK and
+// cases of gjkx/study/extreme_cases.hpp, and every GJK method (ours in double and float, libccd GJK and
 // MPR, FCL's distance with both solvers, Bullet btGjkPairDetector) on the six static ones.
 // Each cell runs in its own fork()ed process under a watchdog (default 5 s) and is judged
 // right, wrong, NaN, hang, crash or cap against the independent reference (the rules are in
-// extreme_cases.hpp and in the legend of the output). Prints the tables and writes them as
+// gjkx/study/extreme_cases.hpp and in the legend of the output). Prints the tables and writes them as
 // markdown to DIR/extreme-cases.md (default figures/study). Exits with 1 if the references
 // disagree with one another (closed forms, brute force, 2D forms). Takes a few seconds.
 // Regenerate the kept table with `build/chapters/09_study/extreme_cases --out figures/study`.
+#include "../command_line.hpp"
+
 #include <gjkx/study/extreme_cases.hpp>
-#include <gjkx/study/peers_gjk.hpp>
+#include <gjkx/study/peers.hpp>
 #include <gjkx/study/peers_toi.hpp>
 
 #include <chrono>
@@ -29,7 +31,7 @@
 #include <vector>
 
 using namespace gjkx;
-using namespace gjkx::extreme;
+using namespace gjkx::study;
 
 namespace {
 
@@ -40,24 +42,13 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      o.out = argv[++i];
-    } else if (arg == "--watchdog" && i + 1 < argc) {
-      o.watchdog = std::strtod(argv[++i], nullptr);
-      if (!(o.watchdog > 0)) {
-        std::fprintf(stderr, "--watchdog: must be a positive number of seconds\n");
-        std::exit(2);
-      }
-    } else {
-      std::fprintf(arg == "--help" || arg == "-h" ? stdout : stderr,
-                   "usage: %s [--out DIR] [--watchdog SECONDS]\n"
-                   "  the table of stiff and extreme cases: tables on stdout, DIR/extreme-cases.md (default figures/study)\n",
-                   argv[0]);
-      std::exit(arg == "--help" || arg == "-h" ? 0 : 2);
-    }
-  }
+  CLI::App app{"The table of stiff and extreme cases: tables on stdout, DIR/extreme-cases.md."};
+  app.add_option("--out", o.out, "the folder for extreme-cases.md")->type_name("DIR")->capture_default_str();
+  app.add_option("--watchdog", o.watchdog, "the time limit of one cell")
+      ->type_name("SECONDS")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
   return o;
 }
 
@@ -68,8 +59,8 @@ std::vector<ToiMethod> peerToiMethods() {
   std::vector<ToiMethod> m;
 #if GJKX_HAVE_FCL
   auto fcl = [](const ToiQuery& q, bool ca, double tocErr, fcl::GJKSolverType solver) {
-    const toistudy::peers::FclQuery f(q);
-    const toistudy::peers::PeerOutcome r = f.run(ca, tocErr, solver);
+    const peers::FclQuery f(q);
+    const peers::PeerOutcome r = f.run(ca, tocErr, solver);
     ToiAnswer a;
     a.hit = r.hit;
     a.time = r.time;
@@ -81,8 +72,8 @@ std::vector<ToiMethod> peerToiMethods() {
 #endif
 #if GJKX_HAVE_BULLET
   m.push_back({"Bullet", false, false, false, [](const ToiQuery& q) {
-                 const toistudy::peers::BulletQuery b(q);
-                 const toistudy::peers::PeerOutcome r = b.run();
+                 const peers::BulletQuery b(q);
+                 const peers::PeerOutcome r = b.run();
                  ToiAnswer a;
                  a.hit = r.hit;
                  a.time = r.time;
@@ -91,7 +82,7 @@ std::vector<ToiMethod> peerToiMethods() {
 #endif
 #if GJKX_HAVE_BOX2D
   m.push_back({"Box2D", false, true, false, [](const ToiQuery& q) {
-                 const toistudy::peers::Box2dQuery b(q);
+                 const peers::Box2dQuery b(q);
                  b2TOIOutput output;
                  b2TimeOfImpact(&output, &b.input);
                  ToiAnswer a;
@@ -113,41 +104,13 @@ std::vector<ToiMethod> peerToiMethods() {
   return m;
 }
 
-/// The GJK study's description of a case's shape (for peers_gjk.hpp's adapters).
-[[maybe_unused]] study::ShapeDesc describe(const ShapeSpec& s) {
-  study::ShapeDesc d;
-  switch (s.kind) {
-    case ShapeKind::Box:
-      d.kind = study::ShapeKind::Box;
-      d.halfExtents = s.halfExtents;
-      break;
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk:
-      d.kind = study::ShapeKind::Sphere;
-      d.radius = s.radius;
-      break;
-    case ShapeKind::Capsule:
-      d.kind = study::ShapeKind::Capsule;
-      d.radius = s.radius;
-      d.halfLength = s.halfLength;
-      break;
-    case ShapeKind::Polytope:
-    case ShapeKind::Polygon:
-      d.kind = study::ShapeKind::Polytope;
-      d.polytope = std::make_shared<Polytope<double>>(*s.hull);
-      break;
-  }
-  return d;
-}
-
 std::vector<GjkMethod> peerGjkMethods() {
   std::vector<GjkMethod> m;
 #if GJKX_HAVE_CCD
   for (const bool mpr : {false, true})
     m.push_back({mpr ? "libccd MPR" : "libccd GJK", false, [mpr](const StaticCase& c) {
-                   const study::ShapeDesc a = describe(c.P), b = describe(c.Q);
-                   const study::CcdObject A{&a, c.poseP}, B{&b, c.poseQ};
-                   const ccd_t ccd = study::ccdSettings();
+                   const peers::CcdObject A{&c.P, c.poseP}, B{&c.Q, c.poseQ};
+                   const ccd_t ccd = peers::ccdSettings();
                    GjkAnswer out;
                    out.boolean = true;
                    out.overlap = (mpr ? ccdMPRIntersect(&A, &B, &ccd) : ccdGJKIntersect(&A, &B, &ccd)) != 0;
@@ -157,21 +120,21 @@ std::vector<GjkMethod> peerGjkMethods() {
 #if GJKX_HAVE_FCL
   for (const auto solver : {fcl::GST_LIBCCD, fcl::GST_INDEP})
     m.push_back({solver == fcl::GST_LIBCCD ? "FCL libccd" : "FCL indep", false, [solver](const StaticCase& c) {
-                   const auto a = study::fclShape(describe(c.P)), b = study::fclShape(describe(c.Q));
+                   const auto a = peers::fclShape(c.P), b = peers::fclShape(c.Q);
                    fcl::DistanceRequestd request;
                    request.gjk_solver_type = solver;
                    fcl::DistanceResultd result;
                    GjkAnswer out;
-                   out.distance = fcl::distance(a.get(), study::fclTransform(c.poseP), b.get(), study::fclTransform(c.poseQ), request, result);
+                   out.distance = fcl::distance(a.get(), peers::fclTransform(c.poseP), b.get(), peers::fclTransform(c.poseQ), request, result);
                    return out;
                  }});
 #endif
 #if GJKX_HAVE_BULLET
   m.push_back({"Bullet", false, [](const StaticCase& c) {
-                 const auto a = study::bulletShape(describe(c.P)), b = study::bulletShape(describe(c.Q));
-                 study::BulletPair pair(a.get(), b.get());
+                 const auto a = peers::bulletShape(c.P), b = peers::bulletShape(c.Q);
+                 peers::BulletPair pair(a.get(), b.get());
                  GjkAnswer out;
-                 out.distance = pair.distance(study::bulletTransform(c.poseP), study::bulletTransform(c.poseQ));
+                 out.distance = pair.distance(peers::bulletTransform(c.poseP), peers::bulletTransform(c.poseQ));
                  if (std::isnan(out.distance)) setText(out.status, sizeof out.status, "no result");
                  return out;
                }});
@@ -280,19 +243,10 @@ int main(int argc, char** argv) {
     return n;
   };
 
-  const std::string peersFound = [] {
-    std::string s;
-    for (const auto& p : toistudy::peers::found()) s += (s.empty() ? "" : ", ") + p;
-#if GJKX_HAVE_CCD
-    s += (s.empty() ? "" : ", ") + std::string("libccd");
-#endif
-    return s.empty() ? std::string("none") : s;
-  }();
-  std::string peersMissing;
-  for (const auto& p : toistudy::peers::missing()) peersMissing += (peersMissing.empty() ? "" : ", ") + p;
-#if !GJKX_HAVE_CCD
-  peersMissing += (peersMissing.empty() ? "" : ", ") + std::string("libccd");
-#endif
+  // The peers of the time-of-impact table and libccd of the static one.
+  const std::vector<peers::Peer> tablePeers{peers::Peer::FCL, peers::Peer::Bullet, peers::Peer::Box2D, peers::Peer::Libccd};
+  const std::string peersFound = peers::found(tablePeers).empty() ? std::string("none") : peers::joined(peers::found(tablePeers));
+  const std::string peersMissing = peers::joined(peers::missing(tablePeers));
 
   std::printf("Stiff and extreme cases (chapter 09): every method, each cell in its own process, watchdog %.0f s\n", options.watchdog);
   std::printf("peers: %s%s\n\n", peersFound.c_str(), peersMissing.empty() ? "" : ("; left out (not installed): " + peersMissing).c_str());

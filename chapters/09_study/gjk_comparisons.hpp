@@ -9,7 +9,7 @@
 // the true distance is at least that) or -0.01, -0.1, -0.3 (mostly overlapping).
 // Warm: trajectories of small pose changes (Q moves 0.004 and turns 0.01 rad per step, P
 // turns 0.01 rad), as in a simulation; each method keeps whatever it carries from one
-// step to the next (ours: GjkCache; see peers_gjk.hpp for the peers).
+// step to the next (ours: GjkCache; see gjkx/study/peers.hpp for the peers).
 //
 // Timing: each query set is run in batches of `batch` queries timed together with
 // steady_clock (time / batch = one sample per query of the batch); the median and 99th
@@ -22,11 +22,18 @@
 // The reference is our own, in long double, independent of every method: closed forms
 // for spheres and capsules; for boxes and polytopes a brute force over feature pairs
 // (vertex-triangle, edge-edge, edge crossing a triangle) plus a vertex-containment test.
+//
+// Namespace gjkx::study::gjk_comparison: the GJK comparison's own workloads (static pairs
+// at poses) and its own exact reference (`ref`), apart from the time-of-impact study's
+// (gjkx::study::ref in workloads.hpp).
 #pragma once
 
-#include <gjkx/study/peers_gjk.hpp>
+#include <gjkx/study/peers.hpp>
+#include <gjkx/study/shape_description.hpp>
 
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/reference/polytope_distance.hpp>
+#include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/supporting_distance/intersection.hpp>
 
 #include <algorithm>
@@ -38,7 +45,7 @@
 #include <string>
 #include <vector>
 
-namespace gjkx::study {
+namespace gjkx::study::gjk_comparison {
 
 /// Options of the GJK comparison.
 struct GjkStudyOptions {
@@ -67,213 +74,43 @@ struct GjkRow {
 
 // ---------------------------------------------------------------------------------------
 // The exact reference (long double)
+// The closest points and the brute-force polytope distance are the reference library's
+// (gjkx/reference: sliver-safe, long double); here only the study's shapes are mapped to it.
 namespace ref {
-using Real = long double;
-using RVec = Eigen::Matrix<Real, 3, 1>;
+using Real = reference::Real;
+using RVec = reference::Vec;
 
-/// The closest point to x on the segment [a, b].
-inline RVec closestOnSegment(const RVec& x, const RVec& a, const RVec& b) {
-  const RVec ab = b - a;
-  const Real t = ab.squaredNorm() > 0 ? std::clamp((x - a).dot(ab) / ab.squaredNorm(), Real(0), Real(1)) : Real(0);
-  return a + t * ab;
-}
-
-/// Distance between segments [p1,q1] and [p2,q2] (Ericson, Real-Time Collision Detection §5.1.9).
-inline Real segmentSegment(const RVec& p1, const RVec& q1, const RVec& p2, const RVec& q2) {
-  const RVec d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const Real a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  Real s = 0, t = 0;
-  if (a <= 0 && e <= 0) return r.norm();
-  if (a <= 0) {
-    t = std::clamp(f / e, Real(0), Real(1));
-  } else {
-    const Real c = d1.dot(r);
-    if (e <= 0) {
-      s = std::clamp(-c / a, Real(0), Real(1));
-    } else {
-      const Real b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 0 ? std::clamp((b * f - c * e) / denom, Real(0), Real(1)) : Real(0);
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, Real(0), Real(1));
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, Real(0), Real(1));
-      }
-    }
-  }
-  return ((p1 + d1 * s) - (p2 + d2 * t)).norm();
-}
-
-/// Distance from x to the triangle abc (Ericson §5.1.5, by Voronoi regions).
-inline Real pointTriangle(const RVec& p, const RVec& a, const RVec& b, const RVec& c) {
-  const RVec ab = b - a, ac = c - a, ap = p - a;
-  const Real d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return (p - a).norm();
-  const RVec bp = p - b;
-  const Real d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return (p - b).norm();
-  const Real vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + ab * (d1 / (d1 - d3)))).norm();
-  const RVec cp = p - c;
-  const Real d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return (p - c).norm();
-  const Real vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + ac * (d2 / (d2 - d6)))).norm();
-  const Real va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
-  const Real denom = 1 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
-}
-
-/// Does the segment [p, q] cross the triangle abc (strictly, by orientation signs)?
-inline bool segmentCrossesTriangle(const RVec& p, const RVec& q, const RVec& a, const RVec& b, const RVec& c) {
-  const RVec n = (b - a).cross(c - a);
-  const Real sp = n.dot(p - a), sq = n.dot(q - a);
-  if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0) || sp == sq) return false;
-  const RVec x = p + (q - p) * (sp / (sp - sq));
-  const Real u = n.dot((b - a).cross(x - a)), v = n.dot((c - b).cross(x - b)), w = n.dot((a - c).cross(x - c));
-  return (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
-}
-
-/// A convex polytope in world coordinates.
-struct WorldPolytope {
-  std::vector<RVec> vertices;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<std::pair<int, int>> edges;
-  std::vector<RVec> normals;  // unit outward face normals
-  std::vector<Real> offsets;
-  RVec lo, hi;
-  bool contains(const RVec& x) const {
-    for (size_t f = 0; f < normals.size(); ++f)
-      if (normals[f].dot(x) > offsets[f]) return false;
-    return true;
-  }
-};
-
-inline WorldPolytope toWorld(const Polytope<double>& shape, const Pose<double>& pose) {
-  WorldPolytope out;
+/// A polytope at a pose, in world coordinates (long double) as the reference library takes it.
+inline reference::WorldPolytope toWorld(const Polytope<double>& shape, const Pose<double>& pose) {
   const Eigen::Matrix<Real, 3, 3> R = pose.rotation.cast<Real>();
   const RVec t = pose.translation.cast<Real>();
-  RVec centroid = RVec::Zero();
-  for (const auto& v : shape.vertices()) {
-    out.vertices.push_back(R * v.cast<Real>() + t);
-    centroid += out.vertices.back();
-  }
-  centroid /= Real(out.vertices.size());
-  out.triangles = shape.triangles();
-  std::set<std::pair<int, int>> edges;
-  for (const auto& tri : out.triangles) {
-    for (int k = 0; k < 3; ++k) edges.insert({std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])});
-    const RVec& a = out.vertices[tri[0]];
-    RVec n = (out.vertices[tri[1]] - a).cross(out.vertices[tri[2]] - a);
-    if (!(n.norm() > 0)) continue;
-    n.normalize();
-    if (n.dot(a - centroid) < 0) n = -n;
-    out.normals.push_back(n);
-    out.offsets.push_back(n.dot(a));
-  }
-  out.edges.assign(edges.begin(), edges.end());
-  out.lo = out.hi = out.vertices[0];
-  for (const RVec& v : out.vertices) out.lo = out.lo.cwiseMin(v), out.hi = out.hi.cwiseMax(v);
-  return out;
-}
-
-inline Real boxGap(const RVec& lo1, const RVec& hi1, const RVec& lo2, const RVec& hi2) {
-  RVec gap;
-  for (int k = 0; k < 3; ++k) gap[k] = std::max({Real(0), lo1[k] - hi2[k], lo2[k] - hi1[k]});
-  return gap.norm();
-}
-
-/// The exact distance between two convex polytopes (0 when they overlap): brute force.
-inline Real polytopeDistance(const WorldPolytope& A, const WorldPolytope& B) {
-  for (const RVec& v : A.vertices)
-    if (B.contains(v)) return 0;
-  for (const RVec& v : B.vertices)
-    if (A.contains(v)) return 0;
-  // An upper bound: the nearest pair of vertices. A feature whose bounding box is farther
-  // than that from the other polytope's box cannot hold the closest point.
-  Real best = std::numeric_limits<Real>::infinity();
-  for (const RVec& a : A.vertices)
-    for (const RVec& b : B.vertices) best = std::min(best, (a - b).norm());
-  auto near = [&](const RVec& lo, const RVec& hi, const WorldPolytope& other) { return boxGap(lo, hi, other.lo, other.hi) <= best; };
-  auto relevantTriangles = [&](const WorldPolytope& X, const WorldPolytope& other) {
-    std::vector<int> out;
-    for (size_t k = 0; k < X.triangles.size(); ++k) {
-      const auto& t = X.triangles[k];
-      const RVec lo = X.vertices[t[0]].cwiseMin(X.vertices[t[1]]).cwiseMin(X.vertices[t[2]]);
-      const RVec hi = X.vertices[t[0]].cwiseMax(X.vertices[t[1]]).cwiseMax(X.vertices[t[2]]);
-      if (near(lo, hi, other)) out.push_back(int(k));
-    }
-    return out;
-  };
-  auto relevantEdges = [&](const WorldPolytope& X, const WorldPolytope& other) {
-    std::vector<int> out;
-    for (size_t k = 0; k < X.edges.size(); ++k) {
-      const RVec& a = X.vertices[X.edges[k].first];
-      const RVec& b = X.vertices[X.edges[k].second];
-      if (near(a.cwiseMin(b), a.cwiseMax(b), other)) out.push_back(int(k));
-    }
-    return out;
-  };
-  auto relevantVertices = [&](const WorldPolytope& X, const WorldPolytope& other) {
-    std::vector<int> out;
-    for (size_t k = 0; k < X.vertices.size(); ++k)
-      if (near(X.vertices[k], X.vertices[k], other)) out.push_back(int(k));
-    return out;
-  };
-  const auto tA = relevantTriangles(A, B), tB = relevantTriangles(B, A);
-  const auto eA = relevantEdges(A, B), eB = relevantEdges(B, A);
-  const auto vA = relevantVertices(A, B), vB = relevantVertices(B, A);
-  auto tri = [](const WorldPolytope& X, int k, int j) -> const RVec& { return X.vertices[X.triangles[k][j]]; };
-  auto vertexTriangles = [&](const WorldPolytope& X, const std::vector<int>& vs, const WorldPolytope& Y, const std::vector<int>& ts) {
-    for (int v : vs)
-      for (int t : ts) best = std::min(best, pointTriangle(X.vertices[v], tri(Y, t, 0), tri(Y, t, 1), tri(Y, t, 2)));
-  };
-  vertexTriangles(A, vA, B, tB);
-  vertexTriangles(B, vB, A, tA);
-  for (int i : eA)
-    for (int j : eB) {
-      const RVec &a = A.vertices[A.edges[i].first], &b = A.vertices[A.edges[i].second];
-      const RVec &c = B.vertices[B.edges[j].first], &d = B.vertices[B.edges[j].second];
-      if (boxGap(a.cwiseMin(b), a.cwiseMax(b), c.cwiseMin(d), c.cwiseMax(d)) >= best) continue;
-      best = std::min(best, segmentSegment(a, b, c, d));
-    }
-  // Boundaries that cross (no vertex inside the other): an edge pierces a triangle.
-  auto crossing = [&](const WorldPolytope& X, const std::vector<int>& es, const WorldPolytope& Y, const std::vector<int>& ts) {
-    for (int e : es)
-      for (int t : ts)
-        if (segmentCrossesTriangle(X.vertices[X.edges[e].first], X.vertices[X.edges[e].second], tri(Y, t, 0), tri(Y, t, 1), tri(Y, t, 2)))
-          return true;
-    return false;
-  };
-  if (crossing(A, eA, B, tB) || crossing(B, eB, A, tA)) return 0;
-  return best;
+  std::vector<RVec> vertices;
+  for (const auto& v : shape.vertices()) vertices.push_back(R * v.cast<Real>() + t);
+  return reference::WorldPolytope::fromTriangles(std::move(vertices), shape.triangles());
 }
 
 /// The exact distance (0 when overlapping) between two study shapes at their poses.
 /// `boxHulls` holds a box's hull (its 8 corners) for the brute force.
-inline Real distance(const ShapeDesc& P, const Pose<double>& poseP, const ShapeDesc& Q, const Pose<double>& poseQ) {
+inline Real distance(const ShapeDescription& P, const Pose<double>& poseP, const ShapeDescription& Q, const Pose<double>& poseQ) {
   const RVec cP = poseP.translation.cast<Real>(), cQ = poseQ.translation.cast<Real>();
   switch (P.kind) {
     case ShapeKind::Sphere: return std::max(Real(0), (cQ - cP).norm() - Real(P.radius) - Real(Q.radius));
     case ShapeKind::Capsule: {
-      auto end = [](const ShapeDesc& d, const Pose<double>& pose, double sign) {
+      auto end = [](const ShapeDescription& d, const Pose<double>& pose, double sign) {
         return RVec(pose.rotation.cast<Real>() * RVec(0, 0, Real(sign * d.halfLength)) + pose.translation.cast<Real>());
       };
-      const Real axes = segmentSegment(end(P, poseP, -1), end(P, poseP, 1), end(Q, poseQ, -1), end(Q, poseQ, 1));
+      const Real axes = reference::segmentSegmentDistance(end(P, poseP, -1), end(P, poseP, 1), end(Q, poseQ, -1), end(Q, poseQ, 1));
       return std::max(Real(0), axes - Real(P.radius) - Real(Q.radius));
     }
     default: {
-      auto hull = [](const ShapeDesc& d) {
-        if (d.kind == ShapeKind::Polytope) return *d.polytope;
+      auto hull = [](const ShapeDescription& d) {
+        if (d.kind == ShapeKind::Polytope) return *d.hull;
         std::vector<Vector3<double>> corners;
         for (int k = 0; k < 8; ++k)
           corners.emplace_back((k & 1 ? 1 : -1) * d.halfExtents.x(), (k & 2 ? 1 : -1) * d.halfExtents.y(), (k & 4 ? 1 : -1) * d.halfExtents.z());
         return Polytope<double>::hull(corners);
       };
-      return polytopeDistance(toWorld(hull(P), poseP), toWorld(hull(Q), poseQ));
+      return reference::distance(toWorld(hull(P), poseP), toWorld(hull(Q), poseQ));
     }
   }
 }
@@ -291,7 +128,7 @@ struct GjkQuery {
 struct GjkWorkload {
   std::string name;  ///< box, sphere, capsule, polytope12, ...
   ShapeKind kind;
-  std::vector<ShapeDesc> shapes;
+  std::vector<ShapeDescription> shapes;
   std::vector<GjkQuery> cold, warm;
 };
 
@@ -411,15 +248,10 @@ GjkRow measure(const std::string& workload, const std::string& method, const std
   return row;
 }
 
+/// Our shape of concrete type T (Box<S>, Sphere<S>, Capsule<S>, Polytope<S>) for a description.
 template <typename T>
-T ourShape(const ShapeDesc& d) {
-  using S = typename T::Scalar;
-  if constexpr (std::is_same_v<T, Box<S>>) return Box<S>(d.halfExtents.cast<S>());
-  else if constexpr (std::is_same_v<T, Sphere<S>>) return Sphere<S>(S(d.radius));
-  else if constexpr (std::is_same_v<T, Capsule<S>>)
-    return Capsule<S>(Vector3<S>(S(0), S(0), S(-d.halfLength)), Vector3<S>(S(0), S(0), S(d.halfLength)), S(d.radius));
-  else if constexpr (std::is_same_v<S, float>) return *d.polytopeF;
-  else return *d.polytope;
+T ourShapeAs(const ShapeDescription& d) {
+  return std::get<T>(ourShape<typename T::Scalar>(d));
 }
 
 /// Ours (gjkx::gjk for distance, gjkx::intersect for boolean) in scalar S. With
@@ -432,8 +264,8 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
   const std::vector<GjkQuery>& queries = warm ? w.warm : w.cold;
   std::vector<Placed<T>> P, Q;
   for (const auto& q : queries) {
-    P.push_back(Placed<T>{ourShape<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{ourShape<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
+    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
   }
   GjkSettings<S> settings;
   settings.roundedCores = roundedCores;
@@ -497,12 +329,12 @@ inline void measurePeers(const GjkWorkload& w, const std::string& workload, bool
   (void)workload;
 #if GJKX_HAVE_CCD
   if (boolean) {
-    std::vector<CcdObject> A(n), B(n);
+    std::vector<peers::CcdObject> A(n), B(n);
     for (int k = 0; k < n; ++k) {
-      A[k] = CcdObject{&w.shapes[queries[k].shapeP], queries[k].poseP};
-      B[k] = CcdObject{&w.shapes[queries[k].shapeQ], queries[k].poseQ};
+      A[k] = peers::CcdObject{&w.shapes[queries[k].shapeP], queries[k].poseP};
+      B[k] = peers::CcdObject{&w.shapes[queries[k].shapeQ], queries[k].poseQ};
     }
-    const ccd_t ccd = ccdSettings();
+    const ccd_t ccd = peers::ccdSettings();
     const char* none = warm ? "none" : "-";
     rows.push_back(measure(workload, "ccd-gjk", none, false, queries, true, repeats,
                            [&](int k) { return double(ccdGJKIntersect(&A[k], &B[k], &ccd)); }, [] {}));
@@ -513,9 +345,9 @@ inline void measurePeers(const GjkWorkload& w, const std::string& workload, bool
 #if GJKX_HAVE_FCL
   {
     std::vector<std::shared_ptr<fcl::CollisionGeometryd>> geometry;
-    for (const auto& s : w.shapes) geometry.push_back(fclShape(s));
+    for (const auto& s : w.shapes) geometry.push_back(peers::fclShape(s));
     std::vector<fcl::Transform3d> tP, tQ;
-    for (const auto& q : queries) tP.push_back(fclTransform(q.poseP)), tQ.push_back(fclTransform(q.poseQ));
+    for (const auto& q : queries) tP.push_back(peers::fclTransform(q.poseP)), tQ.push_back(peers::fclTransform(q.poseQ));
     for (const auto solver : {fcl::GST_LIBCCD, fcl::GST_INDEP}) {
       const char* name = solver == fcl::GST_LIBCCD ? "fcl-libccd" : "fcl-indep";
       if (boolean) {
@@ -552,14 +384,14 @@ inline void measurePeers(const GjkWorkload& w, const std::string& workload, bool
 #if GJKX_HAVE_BULLET
   {
     std::vector<std::shared_ptr<btConvexShape>> shapes;
-    for (const auto& s : w.shapes) shapes.push_back(bulletShape(s));
+    for (const auto& s : w.shapes) shapes.push_back(peers::bulletShape(s));
     std::vector<btTransform> tP, tQ;
-    for (const auto& q : queries) tP.push_back(bulletTransform(q.poseP)), tQ.push_back(bulletTransform(q.poseQ));
-    std::unique_ptr<BulletPair> pair;
+    for (const auto& q : queries) tP.push_back(peers::bulletTransform(q.poseP)), tQ.push_back(peers::bulletTransform(q.poseQ));
+    std::unique_ptr<peers::BulletPair> pair;
     auto answer = [&](int k) {
       // Cold: a fresh detector per query. Warm: one per trajectory, starting from its cached axis.
       if (!warm || queries[k].startsTrajectory || !pair)
-        pair = std::make_unique<BulletPair>(shapes[queries[k].shapeP].get(), shapes[queries[k].shapeQ].get());
+        pair = std::make_unique<peers::BulletPair>(shapes[queries[k].shapeP].get(), shapes[queries[k].shapeQ].get());
       const double d = pair->distance(tP[k], tQ[k]);
       if (std::isnan(d)) return d;
       return boolean ? (d <= 0 ? 1.0 : 0.0) : d;
@@ -602,6 +434,8 @@ inline std::vector<GjkRow> runGjkComparisons(const GjkStudyOptions& options) {
             rows.push_back(detail::measureOurs<Capsule<double>>(w, workload, "ours-curved", warm, boolean, repeats, false));
             break;
           case ShapeKind::Polytope: detail::measureOursBothScalars<Polytope>(w, workload, warm, boolean, repeats, rows); break;
+          case ShapeKind::Polygon:
+          case ShapeKind::Disk: break;  // the 2D set is the time-of-impact study's
         }
         detail::measurePeers(w, workload, warm, boolean, repeats, rows);
       }
@@ -652,4 +486,4 @@ inline std::vector<std::string> gjkRatioLines(const std::vector<GjkRow>& rows) {
   return lines;
 }
 
-}  // namespace gjkx::study
+}  // namespace gjkx::study::gjk_comparison

@@ -19,7 +19,8 @@
 // `build/chapters/09_study/gjk_study --out figures/study`.
 //
 // What each column means, and how the shapes, poses and references are made:
-// gjk_comparisons.hpp; how each peer is called (margins, warm starts): peers_gjk.hpp.
+// gjk_comparisons.hpp; how each peer is called (margins, warm starts): gjkx/study/peers.hpp.
+#include "../command_line.hpp"
 #include "gjk_comparisons.hpp"
 
 #include <algorithm>
@@ -33,33 +34,23 @@
 #include <string>
 #include <vector>
 
-using gjkx::study::GjkRow;
+using gjkx::study::gjk_comparison::GjkRow;
+namespace peers = gjkx::study::peers;
 
 namespace {
 
 struct Options {
   std::string out = "figures/study";
-  gjkx::study::GjkStudyOptions study;
+  gjkx::study::gjk_comparison::GjkStudyOptions study;
 };
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int k = 1; k < argc; ++k) {
-    const std::string arg = argv[k];
-    if (arg == "--quick") {
-      o.study.quick = true;
-    } else if (arg == "--seed" && k + 1 < argc) {
-      o.study.seed = unsigned(std::strtoul(argv[++k], nullptr, 10));
-    } else if (arg == "--out" && k + 1 < argc) {
-      o.out = argv[++k];
-    } else {
-      std::fprintf(arg == "--help" || arg == "-h" ? stdout : stderr,
-                   "usage: %s [--out DIR] [--quick] [--seed N]\n"
-                   "  the GJK study: tables on stdout, markdown tables and plots in DIR (default figures/study)\n",
-                   argv[0]);
-      std::exit(arg == "--help" || arg == "-h" ? 0 : 2);
-    }
-  }
+  CLI::App app{"The GJK study: tables on stdout, markdown tables and plots in DIR."};
+  app.add_option("--out", o.out, "the folder for the plots and markdown tables")->type_name("DIR")->capture_default_str();
+  app.add_flag("--quick", o.study.quick, "a short run: fewer pairs and repetitions");
+  app.add_option("--seed", o.study.seed, "seed of the shapes and poses")->type_name("N")->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
   return o;
 }
 
@@ -116,9 +107,9 @@ std::string today() {
 
 std::string provenance(const Options& o) {
   return std::string("Written by `gjk_study --out ") + o.out + (o.study.quick ? " --quick" : "") +
-         (o.study.seed != gjkx::study::GjkStudyOptions{}.seed ? " --seed " + std::to_string(o.study.seed) : std::string()) + "` (" +
+         (o.study.seed != gjkx::study::gjk_comparison::GjkStudyOptions{}.seed ? " --seed " + std::to_string(o.study.seed) : std::string()) + "` (" +
          (o.study.quick ? "quick" : "full") + " run, seed " + std::to_string(o.study.seed) + ") on " + today() + "; " +
-         gjkx::study::peersPresent() + ".";
+         peers::presentText(peers::kGjkPeers) + ".";
 }
 
 // Failures of ours, by status: "0", or e.g. "3 (cap 2, numerical 1)".
@@ -468,20 +459,20 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
-  std::printf("GJK comparison (%s run, seed %u); %s\n", o.study.quick ? "quick" : "full", o.study.seed, gjkx::study::peersPresent().c_str());
+  std::printf("GJK comparison (%s run, seed %u); %s\n", o.study.quick ? "quick" : "full", o.study.seed, peers::presentText(peers::kGjkPeers).c_str());
   std::printf("time per query: median and p99 over batches of 16; distance error |d - d_ref| (overlap = 0);\n");
   std::printf("boolean: wrong answers / judged queries against the exact reference\n");
-  const auto rows = gjkx::study::runGjkComparisons(o.study);
+  const auto rows = gjkx::study::gjk_comparison::runGjkComparisons(o.study);
   std::string last;
   for (const auto& r : rows) {
     if (r.workload != last) {
-      if (!last.empty()) std::printf("  best peer: %s\n", gjkx::study::gjkBestPeer(rows, last).c_str());
+      if (!last.empty()) std::printf("  best peer: %s\n", gjkx::study::gjk_comparison::gjkBestPeer(rows, last).c_str());
       std::printf("\n%s (%d queries)\n", r.workload.c_str(), r.queries);
       last = r.workload;
     }
-    std::printf("  %s\n", gjkx::study::formatGjkRow(r).c_str());
+    std::printf("  %s\n", gjkx::study::gjk_comparison::formatGjkRow(r).c_str());
   }
-  if (!last.empty()) std::printf("  best peer: %s\n", gjkx::study::gjkBestPeer(rows, last).c_str());
+  if (!last.empty()) std::printf("  best peer: %s\n", gjkx::study::gjk_comparison::gjkBestPeer(rows, last).c_str());
   printFloatVsDouble(rows);
 
   std::filesystem::create_directories(o.out);
@@ -493,6 +484,6 @@ int main(int argc, char** argv) {
   for (const Group& g : kGroups) plotGroup(o.out, g, rows, haveGnuplot);
 
   std::printf("\n");
-  for (const auto& line : gjkx::study::gjkRatioLines(rows)) std::printf("%s\n", line.c_str());
+  for (const auto& line : gjkx::study::gjk_comparison::gjkRatioLines(rows)) std::printf("%s\n", line.c_str());
   return 0;
 }

@@ -11,6 +11,7 @@ namespace {
 
 using namespace gjkx;
 using namespace gjkx::study;
+using namespace gjkx::study::gjk_comparison;
 
 // The study's workloads (quick size), built once.
 const GjkWorkload& workload(ShapeKind kind, int vertices) {
@@ -26,7 +27,7 @@ const GjkWorkload& workload(ShapeKind kind, int vertices) {
                        : vertices == 12             ? "polytope12"
                        : vertices == 100            ? "polytope100"
                                                     : "polytope1000";
-    it = cache.emplace(key, study::detail::makeWorkload(name, kind, vertices, options)).first;
+    it = cache.emplace(key, gjk_comparison::detail::makeWorkload(name, kind, vertices, options)).first;
   }
   return it->second;
 }
@@ -38,8 +39,8 @@ void runQueries(benchmark::State& state, ShapeKind kind, int vertices, bool warm
   const auto& queries = warm ? w.warm : w.cold;
   std::vector<Placed<T>> P, Q;
   for (const auto& q : queries) {
-    P.push_back(Placed<T>{study::detail::ourShape<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{study::detail::ourShape<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+    P.push_back(Placed<T>{gjk_comparison::detail::ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
+    Q.push_back(Placed<T>{gjk_comparison::detail::ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
   }
   const GjkSettings<S> settings;
   const IntersectionSettings<S> intersection;

@@ -12,6 +12,7 @@
 //   MISSES method=<name> workload=<name> misses=N false_alarms=N queries=N
 // For the time of impact "ours" in the RATIO lines is the paper's variant in double at
 // collision tolerance 1e-7. Numbers are medians of per-query times.
+#include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
 #if __has_include("gjk_comparisons.hpp")
@@ -28,27 +29,20 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-  gjkx::toistudy::ToiStudyOptions toiOptions;
+  gjkx::study::ToiStudyOptions toiOptions;
   toiOptions.quick = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--ccd-data" && i + 1 < argc) {
-      toiOptions.ccdData = argv[++i];
-    } else {
-      std::fprintf(arg == "--help" || arg == "-h" ? stdout : stderr,
-                   "usage: %s [--ccd-data DIR]\n  a quick run of every comparison of the study, ending with RATIO and MISSES lines\n",
-                   argv[0]);
-      return arg == "--help" || arg == "-h" ? 0 : 2;
-    }
-  }
+  CLI::App app{"A quick run of every comparison of the study, ending with RATIO and MISSES lines."};
+  app.add_option("--ccd-data", toiOptions.ccdData, "the CCD benchmark's sample queries (default: the build's ../shared/data/ccd-queries)")
+      ->type_name("DIR");
+  chapter::parseOrExit(app, argc, argv);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
   std::printf("study_summary: peers found:");
-  for (const auto& p : gjkx::toistudy::peers::found()) std::printf(" %s", p.c_str());
+  for (const auto& p : gjkx::study::peers::found(gjkx::study::peers::kToiPeers)) std::printf(" %s", p.c_str());
   std::printf("; left out (not installed):");
-  const auto missing = gjkx::toistudy::peers::missing();
+  const auto missing = gjkx::study::peers::missing(gjkx::study::peers::kToiPeers);
   if (missing.empty()) std::printf(" none");
   for (const auto& p : missing) std::printf(" %s", p.c_str());
   std::printf("\n");
@@ -57,12 +51,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> ratioLines;
 #if GJKX_STUDY_SUMMARY_GJK
   {
-    gjkx::study::GjkStudyOptions gjkOptions;
+    gjkx::study::gjk_comparison::GjkStudyOptions gjkOptions;
     gjkOptions.quick = true;
-    const auto rows = gjkx::study::runGjkComparisons(gjkOptions);
+    const auto rows = gjkx::study::gjk_comparison::runGjkComparisons(gjkOptions);
     std::printf("\n== GJK (quick) ==\n");
-    for (const auto& r : rows) std::printf("%s\n", gjkx::study::formatGjkRow(r).c_str());
-    for (const auto& line : gjkx::study::gjkRatioLines(rows)) ratioLines.push_back(line);
+    for (const auto& r : rows) std::printf("%s\n", gjkx::study::gjk_comparison::formatGjkRow(r).c_str());
+    for (const auto& line : gjkx::study::gjk_comparison::gjkRatioLines(rows)) ratioLines.push_back(line);
     std::printf("gjk comparison done at %.1f s\n", elapsed());
   }
 #else
@@ -70,9 +64,9 @@ int main(int argc, char** argv) {
 #endif
 
   // --- Time of impact (quick) ---
-  const gjkx::toistudy::ToiStudyResults toi = gjkx::toistudy::runToiComparisons(toiOptions);
+  const gjkx::study::ToiStudyResults toi = gjkx::study::runToiComparisons(toiOptions);
   std::printf("\n== Time of impact (quick; us per query, misses/ref hits, false alarms/clear misses, error) ==\n%s\n",
-              gjkx::toistudy::toiTableHeader());
+              gjkx::study::toiTableHeader());
   for (const auto& r : toi.rows) {
     // Condensed: the settings the RATIO lines and the note quote.
     const bool dbl = r.scalar == "double";
@@ -80,7 +74,7 @@ int main(int argc, char** argv) {
                       (r.family == "ours" && !dbl && r.setting == "tol=1e-5") || (r.family == "certified" && dbl && r.setting == "tol=1e-7") ||
                       (r.family == "CA" && dbl && r.setting == "tol=1e-7") || (r.family == "static" && dbl && r.setting == "N=8") ||
                       (r.family == "swept" && dbl);
-    if (keep) std::printf("%s\n", gjkx::toistudy::formatToiRow(r).c_str());
+    if (keep) std::printf("%s\n", gjkx::study::formatToiRow(r).c_str());
   }
   std::printf("\n== CCD benchmark sample queries (ours, double) ==\n");
   if (toi.ccd.empty()) std::printf("%s\n", toi.ccdNote.c_str());
@@ -88,8 +82,8 @@ int main(int argc, char** argv) {
     std::printf("CCD tolerance=%.0e queries=%lld fn=%lld fp=%lld us_per_query=%.3f\n", c.tolerance, c.queries, c.fn, c.fp, c.usPerQuery);
   std::printf("time of impact comparison done at %.1f s\n\n", elapsed());
 
-  for (const auto& line : gjkx::toistudy::toiRatioLines(toi.rows)) ratioLines.push_back(line);
+  for (const auto& line : gjkx::study::toiRatioLines(toi.rows)) ratioLines.push_back(line);
   for (const auto& line : ratioLines) std::printf("%s\n", line.c_str());
-  for (const auto& line : gjkx::toistudy::toiMissLines(toi.rows)) std::printf("%s\n", line.c_str());
+  for (const auto& line : gjkx::study::toiMissLines(toi.rows)) std::printf("%s\n", line.c_str());
   return 0;
 }

@@ -2,14 +2,14 @@
 // of workloads.hpp, against the independent long-double reference there.
 //
 // Methods (each at the settings listed; "ours" are this library's):
-// - static N: gjkx::intersect at N evenly spaced times (N = 2, 8, 32); the time of impact is
-//   the first sample found intersecting;
+// - static N: gjkx::staticSampling, the static test at N evenly spaced times (N = 2, 8,
+//   32); the time of impact is the first sample found intersecting;
 // - swept: gjkx::sweepingTest (the hulls of each body at t0 and t1): yes/no only, so its
 //   error is not measured, only its misses and false alarms;
-// - CA: conservative advancement (the paper's reference [8]), written here: GJK's distance
-//   d at t (its proven lower bound), then t += d / L with L the bound on the relative speed
-//   of any two points (|v| + |a| + |w| r per body), until d < tol (hit) or t > 1 (no hit);
-//   a cap of 10000 steps reports a hit at the last t;
+// - CA: conservative advancement (the paper's reference [8]), gjkx::conservativeAdvancement:
+//   GJK's distance d at t (its proven lower bound), then t += d / L with L the bound on the
+//   relative speed of any two points (|v| + |a| + |w| r per body), until d < tol (hit) or
+//   t > 1 (no hit); its cap of 10000 steps and a numerical failure are taken as hits;
 // - ours: gjkx::timeOfImpact (the paper's extrusion test + Brent) at collision tolerances
 //   1e-2 ... 1e-9 in double and 1e-2 ... 1e-5 in float, time tolerance min(sqrt(eps), tol);
 // - certified: the same with ExtrusionVariant::Certified (double 1e-7 and 1e-5; float 1e-5);
@@ -30,10 +30,13 @@
 #pragma once
 
 #include <gjkx/study/ccd_queries.hpp>
+#include <gjkx/study/our_settings.hpp>
 #include <gjkx/study/peers_toi.hpp>
 #include <gjkx/study/workloads.hpp>
 
+#include <gjkx/brent/conservative_advancement.hpp>
 #include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/extrusion/static_sampling.hpp>
 #include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 
@@ -53,7 +56,7 @@
 #define GJKX_CCD_QUERIES_DIR ""
 #endif
 
-namespace gjkx::toistudy {
+namespace gjkx::study {
 
 /// Options of the comparison.
 struct ToiStudyOptions {
@@ -114,10 +117,8 @@ struct Prepared {
   Motion<S> mp, mq;
   S lipschitz;
   explicit Prepared(const ToiQuery& q)
-      : P(ourShape<S>(q.P)), Q(ourShape<S>(q.Q)), mp(toMotion<S>(q.motionP)), mq(toMotion<S>(q.motionQ)) {
-    auto bound = [](const MotionSpec& m, const ShapeSpec& s) { return m.v.norm() + m.a.norm() + m.w.norm() * s.boundingRadius(); };
-    lipschitz = S((bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * 1.000001);
-  }
+      : P(ourShape<S>(q.P)), Q(ourShape<S>(q.Q)), mp(toMotion<S>(q.motionP)), mq(toMotion<S>(q.motionQ)),
+        lipschitz(S(relativeSpeedBound(q))) {}
 };
 
 /// What a method said.
@@ -162,16 +163,14 @@ double timeOurs(const Prepared<S>& p, double budget, Outcome& out, F&& method) {
       p.P, p.Q);
 }
 
-// The methods of ours, as generic callables (P, Q, L) -> Outcome.
+// The methods of ours, as generic callables (P, Q, L) -> Outcome: each calls the library.
 struct StaticSampling {
   int samples;
   template <typename MP, typename MQ, typename S>
   Outcome operator()(const MP& P, const MQ& Q, S /*L*/) const {
-    for (int k = 0; k < samples; ++k) {
-      const S t = S(k) / S(samples - 1);
-      if (intersect(P.at(t), Q.at(t)).status != IntersectionStatus::Disjoint) return {true, double(t), k + 1};
-    }
-    return {false, 1.0, samples};
+    const StaticSamplingResult<S> r = staticSampling(P, Q, S(0), S(1), samples);
+    const bool hit = reportsCollision(r.status);
+    return {hit, hit ? double(r.time) : 1.0, r.samplesRun};
   }
 };
 struct Swept {
@@ -184,17 +183,9 @@ struct ConservativeAdvancement {
   double tolerance;
   template <typename MP, typename MQ, typename S>
   Outcome operator()(const MP& P, const MQ& Q, S L) const {
-    const S tol = S(tolerance);
-    S t = 0;
-    for (int step = 0; step < 10000; ++step) {
-      const GjkResult<S> r = gjk(P.at(t), Q.at(t));
-      if (r.status == GjkStatus::Overlapping || r.status == GjkStatus::NumericalFailure || r.distance < tol)
-        return {true, double(t), step + 1};
-      const S d = std::max(r.lowerBound, S(0));  // proven: the bodies are at least d apart
-      t += d / L;
-      if (t > S(1)) return {false, 1.0, step + 1};
-    }
-    return {true, double(t), 10000};  // cap: undecided, taken as a hit
+    const ConservativeAdvancementResult<S> r = conservativeAdvancement(P, Q, S(0), S(1), caSettings(tolerance, L));
+    const bool hit = reportsCollision(r.status);  // the cap and a numerical failure: undecided, taken as hits
+    return {hit, hit ? double(r.time) : 1.0, r.steps};
   }
 };
 struct Ours {
@@ -202,11 +193,7 @@ struct Ours {
   ExtrusionVariant variant;
   template <typename MP, typename MQ, typename S>
   Outcome operator()(const MP& P, const MQ& Q, S /*L*/) const {
-    ToiSettings<S> settings;
-    settings.collisionTolerance = S(tolerance);
-    settings.timeTolerance = std::min(settings.timeTolerance, S(tolerance));
-    settings.variant = variant;
-    const ToiResult<S> r = timeOfImpact(P, Q, S(0), S(1), settings);
+    const ToiResult<S> r = timeOfImpact(P, Q, S(0), S(1), toiSettings<S>(tolerance, variant));
     return {reportsCollision(r.status), double(r.time), r.gjkRuns};
   }
 };
@@ -500,4 +487,4 @@ inline std::vector<std::string> toiMissLines(const std::vector<ToiRow>& rows) {
   return lines;
 }
 
-}  // namespace gjkx::toistudy
+}  // namespace gjkx::study

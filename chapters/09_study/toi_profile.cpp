@@ -15,6 +15,7 @@
 //
 // The total instruction count divided by the "calls" line (queries x repeat) is the
 // instruction count per query; the same command with --method fcl_ca gives the peer's.
+#include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
 #if __has_include(<valgrind/callgrind.h>)
@@ -32,8 +33,8 @@
 #include <vector>
 
 using namespace gjkx;
-namespace study = gjkx::toistudy::detail;
-using namespace gjkx::toistudy;
+using namespace gjkx::study;
+namespace comparison = gjkx::study::detail;  // the time-of-impact comparison's own parts
 
 namespace {
 
@@ -45,35 +46,15 @@ struct Options {
   double tol = 1e-7;
 };
 
-[[noreturn]] void usage(const char* program, bool ok) {
-  std::fprintf(ok ? stdout : stderr,
-               "usage: %s [--method ours|certified|fcl_ca|bullet] [--workload NAME]... [--queries N] [--repeat N] [--tol T]\n"
-               "  runs one time-of-impact method once per query (no timing), for callgrind\n",
-               program);
-  std::exit(ok ? 0 : 2);
-}
-
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool value = i + 1 < argc;
-    if (arg == "--method" && value) {
-      o.method = argv[++i];
-    } else if (arg == "--workload" && value) {
-      o.workloads.push_back(argv[++i]);
-    } else if (arg == "--queries" && value) {
-      o.queries = std::atoi(argv[++i]);
-    } else if (arg == "--repeat" && value) {
-      o.repeat = std::atoi(argv[++i]);
-    } else if (arg == "--tol" && value) {
-      o.tol = std::atof(argv[++i]);
-    } else {
-      usage(argv[0], arg == "--help" || arg == "-h");
-    }
-  }
-  if (o.queries < 1 || o.repeat < 1 || !(o.tol > 0)) usage(argv[0], false);
-  if (o.method != "ours" && o.method != "certified" && o.method != "fcl_ca" && o.method != "bullet") usage(argv[0], false);
+  CLI::App app{"Runs one time-of-impact method once per query (no timing), for callgrind."};
+  app.add_option("--method", o.method, "the method")->check(CLI::IsMember({"ours", "certified", "fcl_ca", "bullet"}))->capture_default_str();
+  app.add_option("--workload", o.workloads, "a 3D workload to run (repeatable; default: every one)")->type_name("NAME");
+  app.add_option("--queries", o.queries, "queries per workload")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--repeat", o.repeat, "calls per query")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--tol", o.tol, "collision tolerance of ours")->type_name("T")->check(CLI::PositiveNumber)->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
   return o;
 }
 
@@ -94,21 +75,19 @@ auto profiled(int repeat, Run run) {
 }
 
 // One run of ours (double), keeping the solver's own counters.
-study::Outcome runOurs(const study::Prepared<double>& p, const Options& o, Counts& counts) {
+comparison::Outcome runOurs(const comparison::Prepared<double>& p, const Options& o, Counts& counts) {
   return std::visit(
       [&](const auto& a, const auto& b) {
         const auto P = moving(a, p.mp);
         const auto Q = moving(b, p.mq);
-        ToiSettings<double> settings;
-        settings.collisionTolerance = o.tol;
-        settings.timeTolerance = std::min(settings.timeTolerance, o.tol);
-        settings.variant = o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper;
+        const ToiSettings<double> settings =
+            toiSettings<double>(o.tol, o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper);
         const ToiResult<double> r = profiled(o.repeat, [&] { return timeOfImpact(P, Q, 0.0, 1.0, settings); });
         counts.gjkRuns += r.gjkRuns;
         counts.brentIterations += r.brentIterations;
         counts.restarts += r.restarts;
         counts.sdEvaluations += r.sdEvaluations;
-        return study::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
+        return comparison::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
       },
       p.P, p.Q);
 }
@@ -128,15 +107,15 @@ int main(int argc, char** argv) {
     int hits = 0, misses = 0, falseAlarms = 0;
     Counts counts;
     for (const ToiQuery& q : w.queries) {
-      study::Outcome out;
+      comparison::Outcome out;
       if (o.method == "ours" || o.method == "certified") {
-        const study::Prepared<double> p(q);
+        const comparison::Prepared<double> p(q);
         out = runOurs(p, o, counts);
       } else if (o.method == "fcl_ca") {
 #if GJKX_HAVE_FCL
         const peers::FclQuery fcl(q);
         const peers::PeerOutcome r = profiled(o.repeat, [&] { return fcl.run(true, 1e-4, fcl::GST_LIBCCD); });
-        out = study::Outcome{r.hit, r.time};
+        out = comparison::Outcome{r.hit, r.time};
 #else
         std::fprintf(stderr, "toi_profile: FCL was not found at build time\n");
         return 1;
@@ -145,7 +124,7 @@ int main(int argc, char** argv) {
 #if GJKX_HAVE_BULLET
         const peers::BulletQuery bullet(q);
         const peers::PeerOutcome r = profiled(o.repeat, [&] { return bullet.run(); });
-        out = study::Outcome{r.hit, r.time};
+        out = comparison::Outcome{r.hit, r.time};
 #else
         std::fprintf(stderr, "toi_profile: Bullet was not found at build time\n");
         return 1;

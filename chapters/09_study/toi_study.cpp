@@ -15,6 +15,7 @@
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
 // 2-core machine (references about 30 s of it), --quick about 20 s. Regenerate the kept
 // study figures with `build/chapters/09_study/toi_study --out figures/study`.
+#include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
 #include <cstdio>
@@ -27,7 +28,7 @@
 #include <string>
 #include <vector>
 
-using namespace gjkx::toistudy;
+using namespace gjkx::study;
 
 namespace {
 
@@ -38,24 +39,13 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      o.out = argv[++i];
-    } else if (arg == "--quick") {
-      o.study.quick = true;
-    } else if (arg == "--ccd-data" && i + 1 < argc) {
-      o.study.ccdData = argv[++i];
-    } else if (arg == "--seed" && i + 1 < argc) {
-      o.study.seed = std::strtoull(argv[++i], nullptr, 10);
-    } else {
-      std::fprintf(arg == "--help" || arg == "-h" ? stdout : stderr,
-                   "usage: %s [--out DIR] [--quick] [--ccd-data DIR] [--seed N]\n"
-                   "  the time-of-impact study: tables on stdout, plots in DIR (default figures/study)\n",
-                   argv[0]);
-      std::exit(arg == "--help" || arg == "-h" ? 0 : 2);
-    }
-  }
+  CLI::App app{"The time-of-impact study: tables on stdout, plots and tables in DIR."};
+  app.add_option("--out", o.out, "the folder for the plots and markdown tables")->type_name("DIR")->capture_default_str();
+  app.add_flag("--quick", o.study.quick, "a short run: fewer queries, shorter timing batches");
+  app.add_option("--ccd-data", o.study.ccdData, "the CCD benchmark's sample queries (default: the build's ../shared/data/ccd-queries)")
+      ->type_name("DIR");
+  app.add_option("--seed", o.study.seed, "seed of the workloads")->type_name("N")->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
   return o;
 }
 
@@ -147,8 +137,7 @@ std::string provenance(const Options& o) {
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  std::string peersText;
-  for (const auto& p : peers::found()) peersText += (peersText.empty() ? "" : ", ") + p;
+  const std::string peersText = peers::joined(peers::found(peers::kToiPeers));
   return "Written by `toi_study --out " + o.out + (o.study.quick ? " --quick" : "") + "` (" + (o.study.quick ? "quick" : "full") +
          " run, seed " + std::to_string(o.study.seed) + ") on " + date + "; peers: " + (peersText.empty() ? "none" : peersText) + ".";
 }
@@ -180,9 +169,9 @@ void mdNotes(std::ostream& md, const std::string& notes) { md << "\n<br>" << not
 struct ScalarSum {
   int misses = 0, hits = 0, alarms = 0, clear = 0;
   std::vector<double> errors, times;
-  double errMedian() const { return gjkx::toistudy::detail::median(errors); }
+  double errMedian() const { return gjkx::study::detail::median(errors); }
   double errMax() const { return errors.empty() ? std::nan("") : *std::max_element(errors.begin(), errors.end()); }
-  double usMedian() const { return gjkx::toistudy::detail::median(times); }
+  double usMedian() const { return gjkx::study::detail::median(times); }
 };
 struct FloatVsDouble {
   std::vector<std::string> order;                                // "family setting"
@@ -313,9 +302,9 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::filesystem::create_directories(o.out);
   std::printf("toi_study: peers found:");
-  for (const auto& p : peers::found()) std::printf(" %s", p.c_str());
+  for (const auto& p : peers::found(peers::kToiPeers)) std::printf(" %s", p.c_str());
   std::printf("; left out (not installed):");
-  const auto missing = peers::missing();
+  const auto missing = peers::missing(peers::kToiPeers);
   if (missing.empty()) std::printf(" none");
   for (const auto& p : missing) std::printf(" %s", p.c_str());
   std::printf("\n");

@@ -20,6 +20,7 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+namespace ccd = gjkx::study::ccd;  // the benchmark's file format and queries
 using Catch::Matchers::Contains;
 
 namespace {

@@ -18,7 +18,7 @@
 #include <vector>
 
 using namespace gjkx;
-using namespace gjkx::extreme;
+using namespace gjkx::study;
 
 namespace {
 

@@ -1,17 +1,23 @@
-// Reading and solving the sample queries of the CCD benchmark of Wang, Ferguson,
-// Schneider, Jiang, Attene and Panozzo (ACM TOG 40(5), 2021): the external ground truth
-// of chapter 05. Shared by the program ccd_queries and tests/brent/test_ccd_queries.cpp.
-//
-// The format (../shared/data/ccd-queries/README.md): no header; one query is 8
-// consecutive rows, one vertex a row, `xnum,xden,ynum,yden,znum,zden,truth`, each
-// coordinate being strtod(num) / strtod(den) (exact in double for this data). `truth`
-// (0 or 1, the same on all 8 rows) says whether the primitives touch in [0, 1].
-//   vertex-face rows: v(t0), f0(t0), f1(t0), f2(t0), v(t1), f0(t1), f1(t1), f2(t1)
-//   edge-edge rows:   a0(t0), a1(t0), b0(t0), b1(t0), a0(t1), a1(t1), b0(t1), b1(t1)
-// The kind of a file is the name of its folder (`vertex-face` or `edge-edge`).
-//
-// Every vertex moves linearly, so both primitives are `DeformingSimplex`es: P is the
-// vertex (or edge a), Q the face (or edge b), over [0, 1].
+/// @file
+/// @brief The CCD benchmark's sample queries: reading them and solving them with the §5 solver.
+///
+/// Holds (namespace gjkx::study::ccd, the benchmark's file format and queries): `QueryKind`,
+/// `Query`, `QueryFile`, `InputError`, `readQueryFile`, `readQueryFolder`, `runQueries`.
+///
+/// Reading and solving the sample queries of the CCD benchmark of Wang, Ferguson,
+/// Schneider, Jiang, Attene and Panozzo (ACM TOG 40(5), 2021): the external ground truth
+/// of chapter 05. Shared by the program ccd_queries and tests/brent/test_ccd_queries.cpp.
+///
+/// The format (../shared/data/ccd-queries/README.md): no header; one query is 8
+/// consecutive rows, one vertex a row, `xnum,xden,ynum,yden,znum,zden,truth`, each
+/// coordinate being strtod(num) / strtod(den) (exact in double for this data). `truth`
+/// (0 or 1, the same on all 8 rows) says whether the primitives touch in [0, 1].
+///   vertex-face rows: v(t0), f0(t0), f1(t0), f2(t0), v(t1), f0(t1), f1(t1), f2(t1)
+///   edge-edge rows:   a0(t0), a1(t0), b0(t0), b1(t0), a0(t1), a1(t1), b0(t1), b1(t1)
+/// The kind of a file is the name of its folder (`vertex-face` or `edge-edge`).
+///
+/// Every vertex moves linearly, so both primitives are `DeformingSimplex`es: P is the
+/// vertex (or edge a), Q the face (or edge b), over [0, 1].
 #pragma once
 
 #include <gjkx/brent/time_of_impact.hpp>
@@ -28,7 +34,7 @@
 #include <string>
 #include <vector>
 
-namespace ccd {
+namespace gjkx::study::ccd {
 
 /// The two kinds of queries of the benchmark.
 enum class QueryKind { VertexFace, EdgeEdge };
@@ -239,4 +245,4 @@ FileRun<S> runQueries(const QueryFile& file, const gjkx::ToiSettings<S>& setting
   return run;
 }
 
-}  // namespace ccd
+}  // namespace gjkx::study::ccd

@@ -1,76 +1,74 @@
-// The stiff and extreme cases of the study (chapter 07): ten time-of-impact queries and six
-// static pairs built to break a method (contact exactly at round-off, degenerate
-// Minkowski differences, scales that float cannot hold, rotations that endpoints cannot
-// tell apart), each with an independent reference, a stated rule for "right", and a
-// watchdog that turns a hang or a crash of a method into a table cell.
-//
-// The methods of ours are here (the test tests/brent/test_extreme_cases.cpp runs them
-// without any peer); the peers are added by extreme_cases.cpp, which prints the table.
-//
-// References (independent of every method; no GJK, no support mapping):
-// - time of impact: workloads.hpp's long-double brute force (feature pairs of the cores,
-//   a Lipschitz bound on d(t), bisection to 1e-13): t_ref is the first time the bodies
-//   come within 1e-10; and a closed form where the geometry gives one, which must agree;
-// - static pairs: the same long-double distance at the two poses, and a closed form.
-// A 2D form ("planar twin", for Box2D) is given where the case is a prism problem:
-// boxes moving in the plane z = 0 and turning about z, Q's z-range holding P's, so the
-// bodies touch exactly when their cross-sections do; the twin's own 2D reference must
-// give the same t_ref.
-//
-// "Right", per cell:
-// - time of impact, the reference has contact (Expect::Hit): the method reports a hit at
-//   a time t with d_ref(t) <= delta (not early: the bodies are within delta of touching)
-//   and t <= t_ref + delta / L (not late: past the first contact they can have
-//   interpenetrated by at most delta; L bounds how fast d(t) changes). delta is stated per
-//   case. A yes/no method (the swept test) is judged on its yes/no only.
-// - no contact (Expect::NoHit): the method reports no hit.
-// - a gap below every method's resolution (Expect::Either): no hit, or a hit that meets
-//   the hit rule above (t_ref being the first time the gap is under 1e-10).
-// - static distance methods: |d - d_ref| <= tau (an overlap counts as d = 0), with
-//   tau = 1e-6 times the case's scale (its largest coordinate, at least 1): 8 float ulps;
-//   boolean methods: "intersecting" exactly when d_ref = 0, "disjoint" when d_ref > tau,
-//   either in between.
-// Otherwise the cell is wrong (with why), NaN (a non-finite answer or a numerical-failure
-// status), cap (an iteration-cap status), hang (the watchdog's limit ran out) or crash (a
-// signal, or an exception thrown on these valid inputs).
+/// @file
+/// @brief The stiff and extreme cases of the study (chapters/09_study): ten time-of-impact
+/// queries and six static pairs built to break a method, each with an independent
+/// reference, a stated rule for "right", and the methods of ours that the table runs.
+///
+/// Holds (namespace gjkx::study): the cases (`ToiCase`, `StaticCase`, `makeToiCases`,
+/// `makeStaticCases`, their builders in `build`), the answers and verdicts (`ToiAnswer`,
+/// `GjkAnswer`, `Verdict`, `Cell`, `judgeToi`, `judgeGjk`), the methods of ours
+/// (`ourToiMethods`, `ourGjkMethods`: the library's static sampling, swept test,
+/// conservative advancement and time-of-impact solver, called directly) and the guarded
+/// cells (`runToiCell`, `runGjkCell`, through watchdog.hpp).
+///
+/// The methods of ours are here (the test tests/brent/test_extreme_cases.cpp runs them
+/// without any peer); the peers are added by chapters/09_study/extreme_cases.cpp, which
+/// prints the table.
+///
+/// References (independent of every method; no GJK, no support mapping):
+/// - time of impact: workloads.hpp's long-double brute force (feature pairs of the cores,
+///   a Lipschitz bound on d(t), bisection to 1e-13): t_ref is the first time the bodies
+///   come within 1e-10; and a closed form where the geometry gives one, which must agree;
+/// - static pairs: the same long-double distance at the two poses, and a closed form.
+/// A 2D form ("planar twin", for Box2D) is given where the case is a prism problem:
+/// boxes moving in the plane z = 0 and turning about z, Q's z-range holding P's, so the
+/// bodies touch exactly when their cross-sections do; the twin's own 2D reference must
+/// give the same t_ref.
+///
+/// "Right", per cell:
+/// - time of impact, the reference has contact (Expect::Hit): the method reports a hit at
+///   a time t with d_ref(t) <= delta (not early: the bodies are within delta of touching)
+///   and t <= t_ref + delta / L (not late: past the first contact they can have
+///   interpenetrated by at most delta; L bounds how fast d(t) changes). delta is stated per
+///   case. A yes/no method (the swept test) is judged on its yes/no only.
+/// - no contact (Expect::NoHit): the method reports no hit.
+/// - a gap below every method's resolution (Expect::Either): no hit, or a hit that meets
+///   the hit rule above (t_ref being the first time the gap is under 1e-10).
+/// - static distance methods: |d - d_ref| <= tau (an overlap counts as d = 0), with
+///   tau = 1e-6 times the case's scale (its largest coordinate, at least 1): 8 float ulps;
+///   boolean methods: "intersecting" exactly when d_ref = 0, "disjoint" when d_ref > tau,
+///   either in between.
+/// Otherwise the cell is wrong (with why), NaN (a non-finite answer or a numerical-failure
+/// status), cap (an iteration-cap status), hang (the watchdog's limit ran out) or crash (a
+/// signal, or an exception thrown on these valid inputs).
 #pragma once
 
+#include <gjkx/study/our_settings.hpp>
+#include <gjkx/study/shape_description.hpp>
+#include <gjkx/study/watchdog.hpp>
 #include <gjkx/study/workloads.hpp>
 
+#include <gjkx/reference/time_of_impact.hpp>
+
+#include <gjkx/brent/conservative_advancement.hpp>
 #include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/extrusion/static_sampling.hpp>
 #include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/supporting_distance/intersection.hpp>
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
-#include <type_traits>
 #include <variant>
 #include <vector>
 
-namespace gjkx::extreme {
-
-using toistudy::LD;
-using toistudy::MotionSpec;
-using toistudy::ShapeKind;
-using toistudy::ShapeSpec;
-using toistudy::AnyShape;
-using toistudy::ourShape;
-using toistudy::ToiQuery;
+namespace gjkx::study {
 
 /// What a correct method must say about a time-of-impact case (see the file comment).
 enum class Expect { Hit, NoHit, Either };
@@ -92,7 +90,7 @@ struct ToiCase {
 /// One static pair with its reference.
 struct StaticCase {
   std::string name, setup;
-  ShapeSpec P, Q;
+  ShapeDescription P, Q;
   Pose<double> poseP, poseQ;
   double reference = 0;  ///< long-double brute-force distance (0: touching or overlapping)
   double closedForm = std::numeric_limits<double>::quiet_NaN();
@@ -111,8 +109,8 @@ inline Eigen::Matrix3d rotAxis(double a, const Eigen::Vector3d& axis) {
 }
 
 /// A square (or rectangle) of zero thickness in z = 0: a polygon.
-inline ShapeSpec rectangle(double hx, double hy) {
-  ShapeSpec s;
+inline ShapeDescription rectangle(double hx, double hy) {
+  ShapeDescription s;
   s.kind = ShapeKind::Polygon;
   s.hull = std::make_shared<const Polytope<double>>(
       Polytope<double>::polygon({{-hx, -hy, 0}, {hx, -hy, 0}, {hx, hy, 0}, {-hx, hy, 0}}));
@@ -120,7 +118,7 @@ inline ShapeSpec rectangle(double hx, double hy) {
 }
 
 /// The cross-section in z = 0 of a box moving in that plane.
-inline ShapeSpec crossSection(const ShapeSpec& s) {
+inline ShapeDescription crossSection(const ShapeDescription& s) {
   if (s.kind != ShapeKind::Box) throw std::logic_error("extreme cases: only boxes have a planar twin here");
   return rectangle(s.halfExtents.x(), s.halfExtents.y());
 }
@@ -143,27 +141,10 @@ inline ToiQuery planarTwin(const ToiQuery& q) {
   return t;
 }
 
-/// The first root in [0, 1] of a gap function g(t) (g(0) > 0) by scanning and bisection in
-/// long double: the closed forms below are "gap(t) = 0" for one moving feature.
-template <typename G>
-double firstRoot(G&& gap, int scan = 20000) {
-  LD ta = 0;
-  LD ga = gap(ta);
-  if (ga <= 0) return 0;
-  for (int k = 1; k <= scan; ++k) {
-    const LD tb = LD(k) / scan, gb = gap(tb);
-    if (gb <= 0) {
-      LD lo = ta, hi = tb;
-      for (int it = 0; it < 200; ++it) {
-        const LD mid = (lo + hi) / 2;
-        (gap(mid) > 0 ? lo : hi) = mid;
-      }
-      return double(hi);
-    }
-    ta = tb;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
-}
+// The first root in [0, 1] of a gap function g(t) (g(0) > 0), by scanning and bisection in
+// long double (the reference library's): the closed forms below are "gap(t) = 0" for one
+// moving feature.
+using reference::firstRoot;
 
 /// The lowest y of a z-rotated box's cross-section (half extents hx, hy, angle a), relative to its centre.
 inline LD lowestY(LD hx, LD hy, LD a) { return -(hx * std::abs(std::sin(a)) + hy * std::abs(std::cos(a))); }
@@ -173,17 +154,16 @@ inline LD rightmostX(LD hx, LD hy, LD a) { return hx * std::abs(std::cos(a)) + h
 
 /// Fills the references of a time-of-impact case (and of its twin), and L.
 inline void computeReference(ToiCase& c) {
-  toistudy::computeReference(c.query);
-  toistudy::ref::DistanceFunction d(c.query);
+  computeReference(c.query);
+  ref::DistanceFunction d(c.query);
   c.lipschitz = double(d.lipschitz());
-  if (c.hasPlanarForm) toistudy::computeReference(c.planar);
+  if (c.hasPlanarForm) computeReference(c.planar);
 }
 
 /// The ten time-of-impact cases, references computed.
 inline std::vector<ToiCase> makeToiCases() {
   using build::rotAxis;
   using build::rotZ;
-  using toistudy::boxSpec;
   using V = Eigen::Vector3d;
   std::vector<ToiCase> out;
   auto add = [&](ToiCase c, bool planar) {
@@ -194,7 +174,7 @@ inline std::vector<ToiCase> makeToiCases() {
     computeReference(c);
     out.push_back(std::move(c));
   };
-  const ShapeSpec unitP = boxSpec(V(0.5, 0.5, 0.3)), unitQ = boxSpec(V(0.5, 0.5, 0.5));
+  const ShapeDescription unitP = boxDescription(V(0.5, 0.5, 0.3)), unitQ = boxDescription(V(0.5, 0.5, 0.5));
   {
     ToiCase c;
     c.name = "touching faces";
@@ -224,8 +204,8 @@ inline std::vector<ToiCase> makeToiCases() {
     ToiCase c;
     c.name = "coincident origins";
     c.setup = "P and Q start with the same origin (deeply overlapping), P leaves at speed 1.6 turning 2 rad";
-    c.query.P = boxSpec(V(0.5, 0.25, 0.3));
-    c.query.Q = boxSpec(V(0.4, 0.4, 0.5));
+    c.query.P = boxDescription(V(0.5, 0.25, 0.3));
+    c.query.Q = boxDescription(V(0.4, 0.4, 0.5));
     c.query.motionP.R0 = rotZ(0.3);
     c.query.motionP.v = V(1.5, 0.5, 0);
     c.query.motionP.w = V(0, 0, 2);
@@ -252,8 +232,8 @@ inline std::vector<ToiCase> makeToiCases() {
     ToiCase c;
     c.name = "size ratio 10^4";
     c.setup = "a box of half size 0.01 turning 3 rad falls at speed 1.1 on a box of half size 100";
-    c.query.P = boxSpec(V(0.01, 0.01, 0.01));
-    c.query.Q = boxSpec(V(100, 100, 100));
+    c.query.P = boxDescription(V(0.01, 0.01, 0.01));
+    c.query.Q = boxDescription(V(100, 100, 100));
     c.query.motionP.p0 = V(3, 100.51, 0);
     c.query.motionP.v = V(0.4, -1, 0);
     c.query.motionP.w = V(0, 0, 3);
@@ -282,8 +262,8 @@ inline std::vector<ToiCase> makeToiCases() {
     ToiCase c;
     c.name = "half a turn per interval";
     c.setup = "a rod (half size 1 x 0.05) turns by pi about z: the same set at t = 0 and 1, sweeping through Q on the way";
-    c.query.P = boxSpec(V(1, 0.05, 0.3));
-    c.query.Q = boxSpec(V(0.1, 0.1, 0.5));
+    c.query.P = boxDescription(V(1, 0.05, 0.3));
+    c.query.Q = boxDescription(V(0.1, 0.1, 0.5));
     c.query.motionP.w = V(0, 0, M_PI);
     c.query.motionQ.p0 = V(0.3, 0.75, 0);
     c.deltaWhy = "1% of the boxes' size";
@@ -293,8 +273,8 @@ inline std::vector<ToiCase> makeToiCases() {
     ToiCase c;
     c.name = "thin rod spinning";
     c.setup = "a rod 2 long and 0.004 thick spins 12 rad about a tilted axis; its end sweeps through a cube of side 0.06";
-    c.query.P = boxSpec(V(1, 0.002, 0.002));
-    c.query.Q = boxSpec(V(0.03, 0.03, 0.03));
+    c.query.P = boxDescription(V(1, 0.002, 0.002));
+    c.query.Q = boxDescription(V(0.03, 0.03, 0.03));
     c.query.motionP.v = V(0.1, 0.05, 0);
     c.query.motionP.w = 12 * V(0.2, 0.3, 0.93).normalized();
     // Q stands where the rod's point at 0.8 along it passes at t = 0.37.
@@ -323,8 +303,8 @@ inline std::vector<ToiCase> makeToiCases() {
     ToiCase c;
     c.name = "two fast bodies";
     c.setup = "a capsule and a box, each at speed 100 (over 100 body lengths per interval) and tumbling, meet head on";
-    c.query.P = toistudy::capsuleSpec(0.3, 0.1);
-    c.query.Q = boxSpec(V(0.2, 0.15, 0.1));
+    c.query.P = capsuleDescription(0.3, 0.1);
+    c.query.Q = boxDescription(V(0.2, 0.15, 0.1));
     c.query.motionP.p0 = V(-50, 0.1, 0.05);
     c.query.motionP.R0 = rotAxis(0.9, V(1, 0, 1));
     c.query.motionP.v = V(100, 0, 0);
@@ -350,7 +330,7 @@ inline double referenceDistance(const StaticCase& c) {
   q.motionQ.R0 = c.poseQ.rotation;
   q.planar = c.P.kind == ShapeKind::Polygon && c.Q.kind == ShapeKind::Polygon && c.poseP.translation.z() == 0 &&
              c.poseQ.translation.z() == 0;
-  toistudy::ref::DistanceFunction d(q);
+  ref::DistanceFunction d(q);
   return double(d(0));
 }
 
@@ -358,7 +338,6 @@ inline double referenceDistance(const StaticCase& c) {
 inline std::vector<StaticCase> makeStaticCases() {
   using build::rotAxis;
   using build::rotZ;
-  using toistudy::boxSpec;
   using V = Eigen::Vector3d;
   std::vector<StaticCase> out;
   auto pose = [](const Eigen::Matrix3d& R, const V& p) {
@@ -373,7 +352,7 @@ inline std::vector<StaticCase> makeStaticCases() {
     c.tau = 1e-6 * c.scale;
     out.push_back(std::move(c));
   };
-  const ShapeSpec unitP = boxSpec(V(0.5, 0.5, 0.3)), unitQ = boxSpec(V(0.5, 0.5, 0.5));
+  const ShapeDescription unitP = boxDescription(V(0.5, 0.5, 0.3)), unitQ = boxDescription(V(0.5, 0.5, 0.5));
   const Eigen::Matrix3d R = rotAxis(0.7, V(1, 2, 3));
   {
     StaticCase c{"touching faces", "unit boxes face to face, P slid half a face sideways (exact: d = 0)", unitP, unitQ,
@@ -388,7 +367,7 @@ inline std::vector<StaticCase> makeStaticCases() {
     add(c);
   }
   {
-    const ShapeSpec box = boxSpec(V(0.5, 0.4, 0.3));
+    const ShapeDescription box = boxDescription(V(0.5, 0.4, 0.3));
     StaticCase c{"coincident origins", "two identical boxes at the same pose (centre-to-centre direction zero)", box, box,
                  pose(R, V(0.1, 0.2, 0.3)), pose(R, V(0.1, 0.2, 0.3))};
     c.closedForm = 0;
@@ -402,7 +381,7 @@ inline std::vector<StaticCase> makeStaticCases() {
     add(c);
   }
   {
-    const ShapeSpec small = boxSpec(V(0.01, 0.01, 0.01)), big = boxSpec(V(100, 100, 100));
+    const ShapeDescription small = boxDescription(V(0.01, 0.01, 0.01)), big = boxDescription(V(100, 100, 100));
     // The small box's lowest point (turned by R) 0.005 above the big box's top face y = 100.
     const double below = 0.01 * (std::abs(R(1, 0)) + std::abs(R(1, 1)) + std::abs(R(1, 2)));
     StaticCase c{"size ratio 10^4", "a box of half size 0.01, turned, 0.005 above a box of half size 100", small, big,
@@ -426,9 +405,6 @@ inline std::vector<StaticCase> makeStaticCases() {
 // ---------------------------------------------------------------------------------------
 // Answers and the watchdog
 
-/// How a method's answer came back (a plain struct: it crosses a pipe from the child).
-enum class AnswerKind : int { Answer, Cap, NumericalFailure, Exception };
-
 /// A time-of-impact answer.
 struct ToiAnswer {
   AnswerKind kind = AnswerKind::Answer;
@@ -447,81 +423,6 @@ struct GjkAnswer {
   char status[48] = "";
   char message[160] = "";
 };
-
-inline void setText(char* out, std::size_t size, const std::string& text) {
-  std::snprintf(out, size, "%s", text.c_str());
-}
-
-/// How a guarded run ended.
-struct GuardedRun {
-  bool finished = false;  ///< the child wrote its answer and exited
-  bool timedOut = false;  ///< the watchdog killed it
-  int signal = 0;         ///< the signal that ended it otherwise
-  double seconds = 0;
-};
-
-/// Runs `f()` (returning a trivially copyable Answer) in a fork()ed child, with `limit`
-/// seconds of wall time: a child that runs longer is killed (a hang), one that dies of a
-/// signal crashed. An exception is caught in the child and sent back as an answer.
-template <typename Answer, typename F>
-GuardedRun guarded(F&& f, double limit, Answer& answer) {
-  static_assert(std::is_trivially_copyable_v<Answer>, "the answer crosses a pipe");
-  GuardedRun run;
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("extreme cases: pipe() failed");
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("extreme cases: fork() failed");
-  if (pid == 0) {
-    close(fds[0]);
-    // The default actions, whatever handlers the caller installed (a test framework's, say):
-    // a fault kills the child, and the parent reads the signal.
-    for (const int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGTERM, SIGINT, SIGALRM}) std::signal(sig, SIG_DFL);
-    alarm(unsigned(std::ceil(limit)) + 2);  // a second watchdog, should the parent's fail
-    Answer a{};
-    try {
-      a = f();
-    } catch (const std::exception& e) {
-      a = Answer{};
-      a.kind = AnswerKind::Exception;
-      setText(a.message, sizeof a.message, e.what());
-    } catch (...) {
-      a = Answer{};
-      a.kind = AnswerKind::Exception;
-      setText(a.message, sizeof a.message, "unknown exception");
-    }
-    const ssize_t written = write(fds[1], &a, sizeof a);
-    _exit(written == ssize_t(sizeof a) ? 0 : 3);
-  }
-  close(fds[1]);
-  int status = 0;
-  auto pause = std::chrono::microseconds(20);
-  for (;;) {
-    const pid_t r = waitpid(pid, &status, WNOHANG);
-    if (r == pid) break;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      run.timedOut = true;
-      break;
-    }
-    std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(2000));
-  }
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!run.timedOut) {
-    if (WIFSIGNALED(status)) {
-      run.signal = WTERMSIG(status);
-      if (run.signal == SIGALRM) run.timedOut = true;
-    } else if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-      run.finished = read(fds[0], &answer, sizeof answer) == ssize_t(sizeof answer);
-    }
-  }
-  close(fds[0]);
-  return run;
-}
 
 // ---------------------------------------------------------------------------------------
 // Verdicts
@@ -627,7 +528,7 @@ inline Cell judgeToi(const ToiCase& c, const ToiQuery& q, const GuardedRun& run,
     cell.reason = "t outside [0, 1]";
     return cell;
   }
-  toistudy::ref::DistanceFunction d(q);
+  ref::DistanceFunction d(q);
   const double dAt = double(d(LD(a.time)));
   const double late = a.time - q.tRef;
   cell.said += ", d_ref(t) = " + sci(dAt, 2) + ", t - t_ref = " + sci(late, 2);
@@ -679,101 +580,73 @@ constexpr double kTolerance = 1e-5;
 constexpr double kWatchdog = 5;
 
 
-/// Calls `method(P, Q, L)` on the query's two moving bodies, in scalar S.
+/// Calls `method(P, Q, L)` on the query's two moving bodies, in scalar S, with L the
+/// query's relative speed bound (workloads.hpp's relativeSpeedBound).
 template <typename S, typename F>
 ToiAnswer withMoving(const ToiQuery& q, F&& method) {
   const AnyShape<S> P = ourShape<S>(q.P), Q = ourShape<S>(q.Q);
-  const Motion<S> mp = toistudy::toMotion<S>(q.motionP), mq = toistudy::toMotion<S>(q.motionQ);
-  auto bound = [](const MotionSpec& m, const ShapeSpec& s) { return m.v.norm() + m.a.norm() + m.w.norm() * s.boundingRadius(); };
-  const S L = S((bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * 1.000001);
+  const Motion<S> mp = toMotion<S>(q.motionP), mq = toMotion<S>(q.motionQ);
+  const S L = S(relativeSpeedBound(q));
   return std::visit([&](const auto& a, const auto& b) { return method(moving(a, mp), moving(b, mq), L); }, P, Q);
 }
 
+/// The table's answer for static sampling: the first instant not proven disjoint, with
+/// the static test's status there.
 template <typename S>
-void statusOf(ToiAnswer& out, IntersectionStatus status) {
-  setText(out.status, sizeof out.status, toString(status));
-  if (status == IntersectionStatus::IterationCap) out.kind = AnswerKind::Cap;
-  if (status == IntersectionStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+ToiAnswer answerOf(const StaticSamplingResult<S>& r) {
+  ToiAnswer out;
+  if (r.status == StaticSamplingStatus::NoCollision) return out;
+  setText(out.status, sizeof out.status, toString(r.intersection));
+  if (r.status == StaticSamplingStatus::IterationCap) out.kind = AnswerKind::Cap;
+  if (r.status == StaticSamplingStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+  out.hit = true;
+  out.time = double(r.time);
+  return out;
 }
 
-/// Static sampling at N times (toi_comparisons.hpp's StaticSampling), keeping the status.
+/// The table's answer for the swept test: yes/no, with its status.
 template <typename S>
-ToiAnswer staticSampling(const ToiQuery& q, int samples) {
-  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
-    ToiAnswer out;
-    for (int k = 0; k < samples; ++k) {
-      const S t = S(k) / S(samples - 1);
-      const auto r = intersect(P.at(t), Q.at(t));
-      if (r.status == IntersectionStatus::Disjoint) continue;
-      statusOf<S>(out, r.status);
-      out.hit = true;
-      out.time = double(t);
+ToiAnswer answerOf(const IntersectionResult<S>& r) {
+  ToiAnswer out;
+  setText(out.status, sizeof out.status, toString(r.status));
+  if (r.status == IntersectionStatus::IterationCap) out.kind = AnswerKind::Cap;
+  if (r.status == IntersectionStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+  out.hit = r.status != IntersectionStatus::Disjoint;
+  out.time = 0;
+  return out;
+}
+
+/// The table's answer for conservative advancement, keeping its cap and numerical failure.
+template <typename S>
+ToiAnswer answerOf(const ConservativeAdvancementResult<S>& r) {
+  ToiAnswer out;
+  switch (r.status) {
+    case ConservativeAdvancementStatus::NoCollision: return out;
+    case ConservativeAdvancementStatus::NumericalFailure:
+      out.kind = AnswerKind::NumericalFailure;
+      setText(out.status, sizeof out.status, "gjk numerical-failure");
       return out;
-    }
-    return out;
-  });
+    case ConservativeAdvancementStatus::IterationCap:
+      out.kind = AnswerKind::Cap;
+      setText(out.status, sizeof out.status, std::to_string(r.steps) + " steps");
+      break;
+    case ConservativeAdvancementStatus::Hit: break;
+  }
+  out.hit = true;
+  out.time = double(r.time);
+  return out;
 }
 
-/// The sweeping test (toi_comparisons.hpp's Swept): yes/no.
+/// The table's answer for the paper's solver (gjkx::timeOfImpact), keeping its status.
 template <typename S>
-ToiAnswer swept(const ToiQuery& q) {
-  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
-    ToiAnswer out;
-    const auto r = sweepingTest(P, Q, S(0), S(1));
-    statusOf<S>(out, r.status);
-    out.hit = r.status != IntersectionStatus::Disjoint;
-    out.time = 0;
-    return out;
-  });
-}
-
-/// Conservative advancement (toi_comparisons.hpp's ConservativeAdvancement), keeping its cap.
-template <typename S>
-ToiAnswer conservativeAdvancement(const ToiQuery& q, double tolerance) {
-  return withMoving<S>(q, [&](const auto& P, const auto& Q, S L) {
-    ToiAnswer out;
-    const S tol = S(tolerance);
-    S t = 0;
-    for (int step = 0; step < 10000; ++step) {
-      const GjkResult<S> r = gjk(P.at(t), Q.at(t));
-      if (r.status == GjkStatus::NumericalFailure) {
-        out.kind = AnswerKind::NumericalFailure;
-        setText(out.status, sizeof out.status, "gjk numerical-failure");
-        return out;
-      }
-      if (r.status == GjkStatus::Overlapping || r.distance < tol) {
-        out.hit = true;
-        out.time = double(t);
-        return out;
-      }
-      t += std::max(r.lowerBound, S(0)) / L;  // proven: the bodies are at least lowerBound apart
-      if (t > S(1)) return out;
-    }
-    out.kind = AnswerKind::Cap;
-    setText(out.status, sizeof out.status, "10000 steps");
-    out.hit = true;
-    out.time = double(t);
-    return out;
-  });
-}
-
-/// The paper's solver (gjkx::timeOfImpact), as toi_comparisons.hpp's Ours, keeping the status.
-template <typename S>
-ToiAnswer ours(const ToiQuery& q, double tolerance, ExtrusionVariant variant) {
-  return withMoving<S>(q, [&](const auto& P, const auto& Q, S) {
-    ToiSettings<S> settings;
-    settings.collisionTolerance = S(tolerance);
-    settings.timeTolerance = std::min(settings.timeTolerance, S(tolerance));
-    settings.variant = variant;
-    const ToiResult<S> r = timeOfImpact(P, Q, S(0), S(1), settings);
-    ToiAnswer out;
-    setText(out.status, sizeof out.status, toString(r.status));
-    if (r.status == ToiStatus::IterationCap) out.kind = AnswerKind::Cap;
-    if (r.status == ToiStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
-    out.hit = reportsCollision(r.status);
-    out.time = double(r.time);
-    return out;
-  });
+ToiAnswer answerOf(const ToiResult<S>& r) {
+  ToiAnswer out;
+  setText(out.status, sizeof out.status, toString(r.status));
+  if (r.status == ToiStatus::IterationCap) out.kind = AnswerKind::Cap;
+  if (r.status == ToiStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
+  out.hit = reportsCollision(r.status);
+  out.time = double(r.time);
+  return out;
 }
 
 /// GJK's distance (gjkx::gjk, default settings) at the case's poses, in scalar S.
@@ -815,15 +688,37 @@ struct GjkMethod {
 inline std::vector<ToiMethod> ourToiMethods() {
   const double tol = kTolerance;
   std::vector<ToiMethod> m;
-  m.push_back({"static N=32", false, false, false, [](const ToiQuery& q) { return staticSampling<double>(q, 32); }});
-  m.push_back({"swept", false, false, true, [](const ToiQuery& q) { return swept<double>(q); }});
-  m.push_back({"CA", false, false, false, [tol](const ToiQuery& q) { return conservativeAdvancement<double>(q, tol); }});
-  m.push_back({"ours double", true, false, false, [tol](const ToiQuery& q) { return ours<double>(q, tol, ExtrusionVariant::Paper); }});
-  m.push_back({"ours float", true, false, false, [tol](const ToiQuery& q) { return ours<float>(q, tol, ExtrusionVariant::Paper); }});
-  m.push_back({"certified double", true, false, false,
-               [tol](const ToiQuery& q) { return ours<double>(q, tol, ExtrusionVariant::Certified); }});
-  m.push_back({"certified float", true, false, false,
-               [tol](const ToiQuery& q) { return ours<float>(q, tol, ExtrusionVariant::Certified); }});
+  m.push_back({"static N=32", false, false, false, [](const ToiQuery& q) {
+                 return withMoving<double>(q, [](const auto& P, const auto& Q, double) { return answerOf(staticSampling(P, Q, 0.0, 1.0, 32)); });
+               }});
+  m.push_back({"swept", false, false, true, [](const ToiQuery& q) {
+                 return withMoving<double>(q, [](const auto& P, const auto& Q, double) { return answerOf(sweepingTest(P, Q, 0.0, 1.0)); });
+               }});
+  m.push_back({"CA", false, false, false, [tol](const ToiQuery& q) {
+                 return withMoving<double>(q, [tol](const auto& P, const auto& Q, double L) {
+                   return answerOf(conservativeAdvancement(P, Q, 0.0, 1.0, caSettings(tol, L)));
+                 });
+               }});
+  auto ours = [tol](const char* name, ExtrusionVariant variant, bool useFloat) {
+    std::function<ToiAnswer(const ToiQuery&)> run;
+    if (useFloat)
+      run = [tol, variant](const ToiQuery& q) {
+        return withMoving<float>(q, [&](const auto& P, const auto& Q, float) {
+          return answerOf(timeOfImpact(P, Q, 0.0f, 1.0f, toiSettings<float>(tol, variant)));
+        });
+      };
+    else
+      run = [tol, variant](const ToiQuery& q) {
+        return withMoving<double>(q, [&](const auto& P, const auto& Q, double) {
+          return answerOf(timeOfImpact(P, Q, 0.0, 1.0, toiSettings<double>(tol, variant)));
+        });
+      };
+    return ToiMethod{name, true, false, false, run};
+  };
+  m.push_back(ours("ours double", ExtrusionVariant::Paper, false));
+  m.push_back(ours("ours float", ExtrusionVariant::Paper, true));
+  m.push_back(ours("certified double", ExtrusionVariant::Certified, false));
+  m.push_back(ours("certified float", ExtrusionVariant::Certified, true));
   return m;
 }
 
@@ -867,4 +762,4 @@ inline std::vector<std::string> referenceProblems(const std::vector<ToiCase>& ca
   return out;
 }
 
-}  // namespace gjkx::extreme
+}  // namespace gjkx::study

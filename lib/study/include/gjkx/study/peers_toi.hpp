@@ -1,46 +1,45 @@
-// The time-of-impact methods of the peers, on the study's queries (workloads.hpp):
-// - FCL 0.7 `fcl::continuousCollide` on fcl::Boxd / Sphered / Capsuled / Convexd with
-//   fcl::Transform3d start and end poses, the naive solver (CCDC_NAIVE: static tests at
-//   ceil(1 / toc_err) evenly spaced times) and conservative advancement
-//   (CCDC_CONSERVATIVE_ADVANCEMENT), GJK solver GST_LIBCCD (FCL's default; conservative
-//   advancement also with GST_INDEP, FCL's own GJK, which misses less here). Motion model:
-//   CCDM_TRANS (translation between the poses) when the query does not rotate, CCDM_LINEAR
-//   (constant linear and angular velocity about the body origin, which is our screw motion)
-//   when it does (built by hand: see FclQuery::run). A ballistic query becomes the chord between its end poses: FCL has no
-//   accelerated motion, so its error there includes the difference between the parabola and
-//   the chord.
-// - Bullet `btContinuousConvexCollision` (btVoronoiSimplexSolver, btGjkEpaPenetrationDepthSolver)
-//   on btBoxShape / btSphereShape / btCapsuleShapeZ / btConvexHullShape, margins set to 0
-//   (a sphere's and a capsule's radius is their margin in Bullet and stays). Bullet
-//   interpolates the two transforms with constant linear and angular velocity (our screw
-//   motion); ballistic queries become the chord as for FCL. Single precision (Debian's build).
-// - Box2D 2.4 `b2TimeOfImpact` on the 2D set: b2DistanceProxy (polygon vertices with radius 0,
-//   a disk as one vertex with its radius) and b2Sweep (centre and angle at t = 0 and 1).
-//   Box2D aims at a separation of b2_linearSlop (0.005) between the cores, within
-//   0.25 b2_linearSlop, by design (its solver wants a small gap, not contact).
-// Every peer-dependent line is inside #if GJKX_HAVE_FCL / _BULLET / _BOX2D.
+/// @file
+/// @brief The time-of-impact methods of the peers on the study's queries (workloads.hpp),
+/// built with the one set of shape adapters (peers.hpp).
+///
+/// Holds (namespace gjkx::study::peers): `PeerOutcome`, `FclQuery`, `BulletQuery`, `Box2dQuery`.
+///
+/// - FCL 0.7 `fcl::continuousCollide` on fcl::Boxd / Sphered / Capsuled / Convexd with
+///   fcl::Transform3d start and end poses, the naive solver (CCDC_NAIVE: static tests at
+///   ceil(1 / toc_err) evenly spaced times) and conservative advancement
+///   (CCDC_CONSERVATIVE_ADVANCEMENT), GJK solver GST_LIBCCD (FCL's default; conservative
+///   advancement also with GST_INDEP, FCL's own GJK, which misses less here). Motion model:
+///   CCDM_TRANS (translation between the poses) when the query does not rotate, CCDM_LINEAR
+///   (constant linear and angular velocity about the body origin, which is our screw motion)
+///   when it does (built by hand: see FclQuery::run). A ballistic query becomes the chord between its end poses: FCL has no
+///   accelerated motion, so its error there includes the difference between the parabola and
+///   the chord.
+/// - Bullet `btContinuousConvexCollision` (btVoronoiSimplexSolver, btGjkEpaPenetrationDepthSolver)
+///   on btBoxShape / btSphereShape / btCapsuleShapeZ / btConvexHullShape, margins set to 0
+///   (a sphere's and a capsule's radius is their margin in Bullet and stays). Bullet
+///   interpolates the two transforms with constant linear and angular velocity (our screw
+///   motion); ballistic queries become the chord as for FCL. Single precision (Debian's build).
+/// - Box2D 2.4 `b2TimeOfImpact` on the 2D set: b2DistanceProxy (polygon vertices with radius 0,
+///   a disk as one vertex with its radius) and b2Sweep (centre and angle at t = 0 and 1).
+///   Box2D aims at a separation of b2_linearSlop (0.005) between the cores, within
+///   0.25 b2_linearSlop, by design (its solver wants a small gap, not contact).
+/// Every peer-dependent line is inside #if GJKX_HAVE_FCL / _BULLET / _BOX2D.
 #pragma once
 
+#include <gjkx/study/peers.hpp>
 #include <gjkx/study/workloads.hpp>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 #if GJKX_HAVE_FCL
-#include <fcl/geometry/shape/box.h>
-#include <fcl/geometry/shape/capsule.h>
-#include <fcl/geometry/shape/convex.h>
-#include <fcl/geometry/shape/sphere.h>
 #include <fcl/math/motion/interp_motion.h>
 #include <fcl/math/motion/translation_motion.h>
 #include <fcl/narrowphase/continuous_collision.h>
 #endif
 #if GJKX_HAVE_BULLET
-#include <BulletCollision/CollisionShapes/btBoxShape.h>
-#include <BulletCollision/CollisionShapes/btCapsuleShape.h>
-#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
-#include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btContinuousConvexCollision.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
@@ -49,78 +48,29 @@
 #include <box2d/b2_time_of_impact.h>
 #endif
 
-namespace gjkx::toistudy::peers {
+namespace gjkx::study::peers {
 
 /// What a peer said about one query.
 struct PeerOutcome {
-  bool hit = false;
-  double time = 1;
+  bool hit = false;  ///< the peer reports a collision
+  double time = 1;   ///< its time of impact (1 when none)
 };
 
-/// The peers this build has and has not, for the tables.
-inline std::vector<std::string> found() {
-  std::vector<std::string> out;
 #if GJKX_HAVE_FCL
-  out.push_back("FCL");
-#endif
-#if GJKX_HAVE_BULLET
-  out.push_back("Bullet");
-#endif
-#if GJKX_HAVE_BOX2D
-  out.push_back("Box2D");
-#endif
-  return out;
-}
-inline std::vector<std::string> missing() {
-  std::vector<std::string> out;
-#if !GJKX_HAVE_FCL
-  out.push_back("FCL");
-#endif
-#if !GJKX_HAVE_BULLET
-  out.push_back("Bullet");
-#endif
-#if !GJKX_HAVE_BOX2D
-  out.push_back("Box2D");
-#endif
-  return out;
-}
-
-#if GJKX_HAVE_FCL
-/// FCL's geometry for a shape.
-inline std::shared_ptr<fcl::CollisionGeometryd> fclShape(const ShapeSpec& s) {
-  switch (s.kind) {
-    case ShapeKind::Box: return std::make_shared<fcl::Boxd>(2 * s.halfExtents.x(), 2 * s.halfExtents.y(), 2 * s.halfExtents.z());
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk: return std::make_shared<fcl::Sphered>(s.radius);
-    case ShapeKind::Capsule: return std::make_shared<fcl::Capsuled>(s.radius, 2 * s.halfLength);
-    case ShapeKind::Polytope:
-    case ShapeKind::Polygon: {
-      auto vertices = std::make_shared<std::vector<fcl::Vector3d>>();
-      for (const auto& v : s.hull->vertices()) vertices->push_back(v);
-      auto faces = std::make_shared<std::vector<int>>();
-      for (const auto& t : s.hull->triangles()) faces->insert(faces->end(), {3, t[0], t[1], t[2]});
-      return std::make_shared<fcl::Convexd>(vertices, int(s.hull->triangles().size()), faces);
-    }
-  }
-  return nullptr;
-}
-
-inline fcl::Transform3d fclPose(const MotionSpec& m, double t) {
-  const auto [R, p] = m.poseAt(t);
-  fcl::Transform3d tf = fcl::Transform3d::Identity();
-  tf.linear() = R;
-  tf.translation() = p;
-  return tf;
-}
 
 /// One query set up for FCL.
 struct FclQuery {
-  std::shared_ptr<fcl::CollisionGeometryd> P, Q;
-  fcl::Transform3d p0, p1, q0, q1;
-  fcl::CCDMotionType motion = fcl::CCDM_TRANS;
+  std::shared_ptr<fcl::CollisionGeometryd> P;  ///< P's shape
+  std::shared_ptr<fcl::CollisionGeometryd> Q;  ///< Q's shape
+  fcl::Transform3d p0;                         ///< P at t = 0
+  fcl::Transform3d p1;                         ///< P at t = 1
+  fcl::Transform3d q0;                         ///< Q at t = 0
+  fcl::Transform3d q1;                         ///< Q at t = 1
+  fcl::CCDMotionType motion = fcl::CCDM_TRANS;  ///< translation, or screw when a body turns
+  /// The query's shapes and end poses.
   explicit FclQuery(const ToiQuery& q)
-      : P(fclShape(q.P)), Q(fclShape(q.Q)), p0(fclPose(q.motionP, 0)), p1(fclPose(q.motionP, 1)), q0(fclPose(q.motionQ, 0)),
-        q1(fclPose(q.motionQ, 1)) {
+      : P(fclShape(q.P)), Q(fclShape(q.Q)), p0(fclTransform(q.motionP.pose(0))), p1(fclTransform(q.motionP.pose(1))), q0(fclTransform(q.motionQ.pose(0))),
+        q1(fclTransform(q.motionQ.pose(1))) {
     if (q.motionP.rotates() || q.motionQ.rotates()) motion = fcl::CCDM_LINEAR;
   }
   /// continuousCollide with the naive solver (tocErr: 1 / number of samples) or conservative advancement.
@@ -152,42 +102,19 @@ struct FclQuery {
 #endif
 
 #if GJKX_HAVE_BULLET
-inline std::unique_ptr<btConvexShape> bulletShape(const ShapeSpec& s) {
-  switch (s.kind) {
-    case ShapeKind::Box: {
-      auto box = std::make_unique<btBoxShape>(btVector3(btScalar(s.halfExtents.x()), btScalar(s.halfExtents.y()), btScalar(s.halfExtents.z())));
-      box->setMargin(0);
-      return box;
-    }
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk: return std::make_unique<btSphereShape>(btScalar(s.radius));
-    case ShapeKind::Capsule: return std::make_unique<btCapsuleShapeZ>(btScalar(s.radius), btScalar(2 * s.halfLength));
-    case ShapeKind::Polytope:
-    case ShapeKind::Polygon: {
-      auto hull = std::make_unique<btConvexHullShape>();
-      for (const auto& v : s.hull->vertices()) hull->addPoint(btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())), false);
-      hull->recalcLocalAabb();
-      hull->setMargin(0);
-      return hull;
-    }
-  }
-  return nullptr;
-}
-
-inline btTransform bulletPose(const MotionSpec& m, double t) {
-  const auto [R, p] = m.poseAt(t);
-  return btTransform(btMatrix3x3(btScalar(R(0, 0)), btScalar(R(0, 1)), btScalar(R(0, 2)), btScalar(R(1, 0)), btScalar(R(1, 1)),
-                                 btScalar(R(1, 2)), btScalar(R(2, 0)), btScalar(R(2, 1)), btScalar(R(2, 2))),
-                     btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())));
-}
-
 /// One query set up for Bullet.
 struct BulletQuery {
-  std::unique_ptr<btConvexShape> P, Q;
-  btTransform p0, p1, q0, q1;
+  std::unique_ptr<btConvexShape> P;  ///< P's shape
+  std::unique_ptr<btConvexShape> Q;  ///< Q's shape
+  btTransform p0;                    ///< P at t = 0
+  btTransform p1;                    ///< P at t = 1
+  btTransform q0;                    ///< Q at t = 0
+  btTransform q1;                    ///< Q at t = 1
+  /// The query's shapes and end poses.
   explicit BulletQuery(const ToiQuery& q)
-      : P(bulletShape(q.P)), Q(bulletShape(q.Q)), p0(bulletPose(q.motionP, 0)), p1(bulletPose(q.motionP, 1)),
-        q0(bulletPose(q.motionQ, 0)), q1(bulletPose(q.motionQ, 1)) {}
+      : P(bulletShape(q.P)), Q(bulletShape(q.Q)), p0(bulletTransform(q.motionP.pose(0))), p1(bulletTransform(q.motionP.pose(1))),
+        q0(bulletTransform(q.motionQ.pose(0))), q1(bulletTransform(q.motionQ.pose(1))) {}
+  /// btContinuousConvexCollision::calcTimeOfImpact.
   PeerOutcome run() const {
     btVoronoiSimplexSolver simplex;
     btGjkEpaPenetrationDepthSolver epa;
@@ -202,17 +129,10 @@ struct BulletQuery {
 #if GJKX_HAVE_BOX2D
 /// One 2D query set up for Box2D.
 struct Box2dQuery {
-  std::vector<b2Vec2> verticesP, verticesQ;
-  b2TOIInput input;
-  static void proxy(const ShapeSpec& s, std::vector<b2Vec2>& vertices, b2DistanceProxy& out) {
-    if (s.kind == ShapeKind::Disk) {
-      vertices = {b2Vec2(0, 0)};
-      out.Set(vertices.data(), 1, float(s.radius));
-      return;
-    }
-    for (const auto& v : s.hull->vertices()) vertices.emplace_back(float(v.x()), float(v.y()));
-    out.Set(vertices.data(), int32(vertices.size()), 0.0f);
-  }
+  std::vector<b2Vec2> verticesP;  ///< P's proxy's points
+  std::vector<b2Vec2> verticesQ;  ///< Q's proxy's points
+  b2TOIInput input;               ///< Box2D's input
+  /// Box2D's sweep of a planar motion: centre and angle at t = 0 and 1.
   static b2Sweep sweep(const MotionSpec& m) {
     b2Sweep s;
     s.localCenter.SetZero();
@@ -226,17 +146,19 @@ struct Box2dQuery {
     s.alpha0 = 0;
     return s;
   }
+  /// The query's proxies and sweeps over [0, 1].
   explicit Box2dQuery(const ToiQuery& q) {
     verticesP.reserve(8);
     verticesQ.reserve(8);
-    proxy(q.P, verticesP, input.proxyA);
-    proxy(q.Q, verticesQ, input.proxyB);
+    box2dProxy(q.P, verticesP, input.proxyA);
+    box2dProxy(q.Q, verticesQ, input.proxyB);
     input.sweepA = sweep(q.motionP);
     input.sweepB = sweep(q.motionQ);
     input.tMax = 1;
   }
-  Box2dQuery(const Box2dQuery&) = delete;
-  Box2dQuery& operator=(const Box2dQuery&) = delete;
+  Box2dQuery(const Box2dQuery&) = delete;             ///< the proxies point into the vectors
+  Box2dQuery& operator=(const Box2dQuery&) = delete;  ///< the proxies point into the vectors
+  /// b2TimeOfImpact; its failure (iteration limits) is taken as a hit at its last t.
   PeerOutcome run() const {
     b2TOIOutput output;
     b2TimeOfImpact(&output, &input);
@@ -250,4 +172,4 @@ struct Box2dQuery {
 };
 #endif
 
-}  // namespace gjkx::toistudy::peers
+}  // namespace gjkx::study::peers

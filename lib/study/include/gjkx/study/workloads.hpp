@@ -1,35 +1,47 @@
-// The time-of-impact workloads of the study (chapter 07) and their independent reference.
-//
-// A query is two shapes P and Q, each moving over [0, 1] along a rigid motion given by
-// its parameters (start pose, velocity v, acceleration a, angular velocity w about the body
-// origin): R(t) = exp([w] t) R0, p(t) = p0 + v t + a t^2 / 2. Linear, ballistic and screw
-// motions are the three special cases (w = 0 and a = 0; w = 0; a = 0).
-//
-// The reference time of impact is computed here, independently of every method of the
-// study (no GJK, no support mapping): in long double,
-// - the distance between two placed shapes is a brute force over feature pairs
-//   (vertex-vertex, vertex-edge, vertex-triangle, edge-edge) of their cores (a polytope,
-//   a segment for a capsule, a point for a sphere) less the radii, with an edge crossing
-//   a triangle or a vertex inside a solid counting as contact (distance 0). Features far
-//   from the other body are skipped by a bounding-sphere test that cannot change the minimum;
-// - the distance d(t) changes no faster than L, the sum over both bodies of
-//   |v| + |a| + |w| r (r: the body's bounding radius about its origin). The interval is
-//   sampled densely (64 samples), and each gap between two samples [ta, tb] is proven
-//   free of contact when (d(ta) + d(tb) - L (tb - ta)) / 2 > threshold, else split in two
-//   (left half first), down to 1e-13: the first time d(t) <= threshold is found by
-//   bisection, and no contact between samples (tunnelling) can slip through.
-// The reference hits when d(t) <= 1e-10 somewhere in [0, 1]; it is a clear miss when
-// d(t) > kClearMargin (0.02) everywhere. Queries in between are judged for neither misses
-// nor false alarms.
-//
-// The 2D set (polygons and disks in the plane z = 0, motions in that plane) has its own
-// 2D reference: polygon-polygon distance by vertex-edge pairs, contact by a vertex inside
-// or two edges crossing.
+/// @file
+/// @brief The time-of-impact workloads of the study (chapters/09_study) and their
+/// independent reference.
+///
+/// Holds (namespace gjkx::study): the query (`MotionSpec`, `ToiQuery`, `ToiWorkload`,
+/// `relativeSpeedBound`), the long-double reference (`ref`, `computeReference`) and the
+/// generator of the workloads (`gen`, `makeWorkloads`). Shapes are the study's one
+/// description, shape_description.hpp.
+///
+/// A query is two shapes P and Q, each moving over [0, 1] along a rigid motion given by
+/// its parameters (start pose, velocity v, acceleration a, angular velocity w about the body
+/// origin): R(t) = exp([w] t) R0, p(t) = p0 + v t + a t^2 / 2. Linear, ballistic and screw
+/// motions are the three special cases (w = 0 and a = 0; w = 0; a = 0).
+///
+/// The reference time of impact is computed here, independently of every method of the
+/// study (no GJK, no support mapping): in long double,
+/// - the distance between two placed shapes is a brute force over feature pairs
+///   (vertex-vertex, vertex-edge, vertex-triangle, edge-edge) of their cores (a polytope,
+///   a segment for a capsule, a point for a sphere) less the radii, with an edge crossing
+///   a triangle or a vertex inside a solid counting as contact (distance 0). Features far
+///   from the other body are skipped by a bounding-sphere test that cannot change the minimum;
+/// - the distance d(t) changes no faster than L, the sum over both bodies of
+///   |v| + |a| + |w| r (r: the body's bounding radius about its origin). The interval is
+///   sampled densely (64 samples), and each gap between two samples [ta, tb] is proven
+///   free of contact when (d(ta) + d(tb) - L (tb - ta)) / 2 > threshold, else split in two
+///   (left half first), down to 1e-13: the first time d(t) <= threshold is found by
+///   bisection, and no contact between samples (tunnelling) can slip through
+///   (gjkx::reference::firstContact; the closest points are the reference library's too).
+/// The reference hits when d(t) <= 1e-10 somewhere in [0, 1]; it is a clear miss when
+/// d(t) > kClearMargin (0.02) everywhere. Queries in between are judged for neither misses
+/// nor false alarms.
+///
+/// The 2D set (polygons and disks in the plane z = 0, motions in that plane) has its own
+/// 2D reference: polygon-polygon distance by vertex-edge pairs, contact by a vertex inside
+/// or two edges crossing.
 #pragma once
+
+#include <gjkx/study/shape_description.hpp>
 
 #include <gjkx/motion/motion.hpp>
 #include <gjkx/support_mapping/polytope.hpp>
 #include <gjkx/support_mapping/primitives.hpp>
+#include <gjkx/reference/polytope_distance.hpp>
+#include <gjkx/reference/time_of_impact.hpp>
 
 #include <Eigen/Geometry>
 
@@ -45,10 +57,13 @@
 #include <variant>
 #include <vector>
 
-namespace gjkx::toistudy {
+namespace gjkx::study {
 
+/// The reference's scalar.
 using LD = long double;
+/// A point of the reference.
 using V3L = Eigen::Matrix<LD, 3, 1>;
+/// A rotation of the reference.
 using M3L = Eigen::Matrix<LD, 3, 3>;
 
 /// The reference says "hit" when the bodies come within this distance.
@@ -58,109 +73,24 @@ constexpr double kReferenceThreshold = 1e-10;
 constexpr double kClearMargin = 0.02;
 
 // ---------------------------------------------------------------------------------------
-// Shapes and motions of a query
-
-/// The shapes of the study.
-enum class ShapeKind { Box, Sphere, Capsule, Polytope, Polygon, Disk };
-
-/// A shape in its body frame (centred on the body origin).
-struct ShapeSpec {
-  ShapeKind kind = ShapeKind::Box;
-  Eigen::Vector3d halfExtents = Eigen::Vector3d::Ones();  ///< Box
-  double radius = 0;                                      ///< Sphere, Capsule, Disk
-  double halfLength = 0;                                  ///< Capsule: axis from (0,0,-h) to (0,0,h)
-  std::shared_ptr<const Polytope<double>> hull;           ///< Box (its corners), Polytope, Polygon
-
-  /// A short name for tables ("box", "capsule", "poly100", "polygon6", "disk").
-  std::string name() const {
-    switch (kind) {
-      case ShapeKind::Box: return "box";
-      case ShapeKind::Sphere: return "sphere";
-      case ShapeKind::Capsule: return "capsule";
-      case ShapeKind::Polytope: return "poly" + std::to_string(hull->vertexCount());
-      case ShapeKind::Polygon: return "polygon" + std::to_string(hull->vertexCount());
-      case ShapeKind::Disk: return "disk";
-    }
-    return "?";
-  }
-  /// Largest distance of a point of the shape from the body origin.
-  double boundingRadius() const {
-    switch (kind) {
-      case ShapeKind::Box: return halfExtents.norm();
-      case ShapeKind::Sphere:
-      case ShapeKind::Disk: return radius;
-      case ShapeKind::Capsule: return halfLength + radius;
-      case ShapeKind::Polytope:
-      case ShapeKind::Polygon: return hull->boundingRadius();
-    }
-    return 0;
-  }
-  /// The vertex count for polytopes and polygons (8 for a box, 0 otherwise).
-  int vertexCount() const { return hull ? hull->vertexCount() : 0; }
-};
-
-inline ShapeSpec boxSpec(const Eigen::Vector3d& h) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Box;
-  s.halfExtents = h;
-  std::vector<Vector3<double>> corners;
-  for (int k = 0; k < 8; ++k)
-    corners.emplace_back((k & 1) ? h.x() : -h.x(), (k & 2) ? h.y() : -h.y(), (k & 4) ? h.z() : -h.z());
-  s.hull = std::make_shared<const Polytope<double>>(Polytope<double>::hull(corners));
-  return s;
-}
-inline ShapeSpec sphereSpec(double r) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Sphere;
-  s.radius = r;
-  return s;
-}
-inline ShapeSpec capsuleSpec(double halfLength, double r) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Capsule;
-  s.halfLength = halfLength;
-  s.radius = r;
-  return s;
-}
-inline ShapeSpec diskSpec(double r) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Disk;
-  s.radius = r;
-  return s;
-}
-
-/// Our shape for a study shape, in scalar S (a disk is a sphere in the plane z = 0).
-template <typename S>
-using AnyShape = std::variant<Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
-
-/// The library's shape for a ShapeSpec, in scalar S.
-template <typename S>
-AnyShape<S> ourShape(const ShapeSpec& s) {
-  auto points = [&] {
-    std::vector<Vector3<S>> out;
-    for (const auto& v : s.hull->vertices()) out.push_back(v.template cast<S>());
-    return out;
-  };
-  switch (s.kind) {
-    case ShapeKind::Box: return Box<S>(s.halfExtents.cast<S>());
-    case ShapeKind::Sphere:
-    case ShapeKind::Disk: return Sphere<S>(S(s.radius));
-    case ShapeKind::Capsule: return Capsule<S>(Vector3<S>(0, 0, S(-s.halfLength)), Vector3<S>(0, 0, S(s.halfLength)), S(s.radius));
-    case ShapeKind::Polytope: return Polytope<S>::hull(points());
-    case ShapeKind::Polygon: return Polytope<S>::polygon(points());
-  }
-  throw std::logic_error("study: unknown shape kind");
-}
+// Motions and queries
 
 /// A rigid motion over [0, 1] by its parameters (see the file comment).
 struct MotionSpec {
+  /// The body origin at t = 0.
   Eigen::Vector3d p0 = Eigen::Vector3d::Zero();
+  /// The rotation at t = 0.
   Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
+  /// Velocity of the body origin.
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  /// Acceleration of the body origin.
   Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  /// Angular velocity about the body origin.
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
 
+  /// Whether the body turns.
   bool rotates() const { return w.squaredNorm() > 0; }
+  /// Whether the body accelerates.
   bool accelerates() const { return a.squaredNorm() > 0; }
   /// The pose at t in double (for the peers' start and end poses).
   std::pair<Eigen::Matrix3d, Eigen::Vector3d> poseAt(double t) const {
@@ -169,6 +99,17 @@ struct MotionSpec {
     if (speed > 0) R = Eigen::AngleAxisd(speed * t, w / speed).toRotationMatrix() * R0;
     return {R, p0 + v * t + a * (0.5 * t * t)};
   }
+  /// The pose at t as the library's `Pose<double>`.
+  Pose<double> pose(double t) const {
+    const auto [R, p] = poseAt(t);
+    Pose<double> out;
+    out.rotation = R;
+    out.translation = p;
+    return out;
+  }
+  /// A bound on the speed of any point of a shape of bounding radius r carried by this
+  /// motion over [0, 1]: |v| + |a| + |w| r.
+  double speedBound(double r) const { return v.norm() + a.norm() + w.norm() * r; }
 };
 
 /// The motion as the library's `Motion<S>` (constant velocity, constant acceleration or screw).
@@ -184,8 +125,14 @@ Motion<S> toMotion(const MotionSpec& m) {
 
 /// One query with its reference.
 struct ToiQuery {
-  ShapeSpec P, Q;
-  MotionSpec motionP, motionQ;
+  /// The first body's shape.
+  ShapeDescription P;
+  /// The second body's shape.
+  ShapeDescription Q;
+  /// P's motion.
+  MotionSpec motionP;
+  /// Q's motion.
+  MotionSpec motionQ;
   bool refHit = false;     ///< the bodies come within kReferenceThreshold in [0, 1]
   double tRef = 1;         ///< the first such time
   bool clearMiss = false;  ///< never within kClearMargin
@@ -194,81 +141,33 @@ struct ToiQuery {
 
 /// A named set of queries.
 struct ToiWorkload {
+  /// Its name in the tables ("linear", "screw_w1.5", "planar_2d", ...).
   std::string name;
+  /// What its queries are, in one line.
   std::string description;
+  /// The 2D set (Box2D's).
   bool planar = false;
+  /// The queries, each with its reference.
   std::vector<ToiQuery> queries;
 };
+
+/// L of a query: a bound on how fast the distance between its bodies can change (the sum of
+/// both bodies' speed bounds about their bounding radii, 1e-6 larger), the bound the
+/// conservative advancement of the study steps with.
+inline double relativeSpeedBound(const ToiQuery& q) {
+  return (q.motionP.speedBound(q.P.boundingRadius()) + q.motionQ.speedBound(q.Q.boundingRadius())) * 1.000001;
+}
 
 // ---------------------------------------------------------------------------------------
 // The reference (long double)
 namespace ref {
 
-inline LD clamp01(LD x) { return x < 0 ? LD(0) : (x > 1 ? LD(1) : x); }
-
-inline LD pointSegment(const V3L& p, const V3L& a, const V3L& b) {
-  const V3L ab = b - a;
-  const LD l2 = ab.squaredNorm();
-  const LD t = l2 > 0 ? clamp01((p - a).dot(ab) / l2) : LD(0);
-  return (a + t * ab - p).norm();
-}
-
-// Ericson, Real-Time Collision Detection, 5.1.5.
-inline LD pointTriangle(const V3L& p, const V3L& a, const V3L& b, const V3L& c) {
-  const V3L ab = b - a, ac = c - a, ap = p - a;
-  const LD d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.norm();
-  const V3L bp = p - b;
-  const LD d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.norm();
-  const LD vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (a + ab * (d1 / (d1 - d3)) - p).norm();
-  const V3L cp = p - c;
-  const LD d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.norm();
-  const LD vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (a + ac * (d2 / (d2 - d6)) - p).norm();
-  const LD va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))) - p).norm();
-  const LD denom = 1 / (va + vb + vc);
-  return (a + ab * (vb * denom) + ac * (vc * denom) - p).norm();
-}
-
-// Ericson 5.1.9.
-inline LD segmentSegment(const V3L& p1, const V3L& q1, const V3L& p2, const V3L& q2) {
-  const V3L d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const LD a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  LD s = 0, t = 0;
-  if (a <= 0 && e <= 0) return r.norm();
-  if (a <= 0) {
-    t = clamp01(f / e);
-  } else {
-    const LD c = d1.dot(r);
-    if (e <= 0) {
-      s = clamp01(-c / a);
-    } else {
-      const LD b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 0 ? clamp01((b * f - c * e) / denom) : LD(0);
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = clamp01(-c / a);
-      } else if (t > 1) {
-        t = 1;
-        s = clamp01((b - c) / a);
-      }
-    }
-  }
-  return (p1 + d1 * s - (p2 + d2 * t)).norm();
-}
-
-inline bool segmentCrossesTriangle(const V3L& p, const V3L& q, const V3L& a, const V3L& b, const V3L& c) {
-  const V3L n = (b - a).cross(c - a);
-  const LD dp = n.dot(p - a), dq = n.dot(q - a);
-  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;  // one side, or in the plane
-  const V3L x = p + (q - p) * (dp / (dp - dq));
-  return n.dot((b - a).cross(x - a)) >= 0 && n.dot((c - b).cross(x - b)) >= 0 && n.dot((a - c).cross(x - c)) >= 0;
-}
+// The closest points and the contact test come from the reference library (long double,
+// sliver-safe; gjkx/reference/closest_points.hpp and polytope_distance.hpp).
+using reference::pointSegmentDistance;
+using reference::pointTriangleDistance;
+using reference::segmentCrossesTriangle;
+using reference::segmentSegmentDistance;
 
 /// A shape's core (vertices, edges, triangles) and skin radius, in the body frame.
 struct Body {
@@ -280,7 +179,7 @@ struct Body {
   LD radius = 0;        ///< bounding radius of the whole shape about the body origin
 };
 
-inline Body body(const ShapeSpec& s) {
+inline Body body(const ShapeDescription& s) {
   Body b;
   b.radius = LD(s.boundingRadius());
   switch (s.kind) {
@@ -405,23 +304,23 @@ inline LD distance(const Body& A, const Placed& a, const Body& B, const Placed& 
   for (int i : vA) {
     for (int j : fB)
       if ((a.v[i] - b.fc[j]).norm() - b.fr[j] < best)
-        best = std::min(best, pointTriangle(a.v[i], b.v[B.f[j][0]], b.v[B.f[j][1]], b.v[B.f[j][2]]));
+        best = std::min(best, pointTriangleDistance(a.v[i], b.v[B.f[j][0]], b.v[B.f[j][1]], b.v[B.f[j][2]]));
     for (int j : eB)
       if ((a.v[i] - b.ec[j]).norm() - b.er[j] < best)
-        best = std::min(best, pointSegment(a.v[i], b.v[B.e[j][0]], b.v[B.e[j][1]]));
+        best = std::min(best, pointSegmentDistance(a.v[i], b.v[B.e[j][0]], b.v[B.e[j][1]]));
   }
   for (int j : vB) {
     for (int i : fA)
       if ((b.v[j] - a.fc[i]).norm() - a.fr[i] < best)
-        best = std::min(best, pointTriangle(b.v[j], a.v[A.f[i][0]], a.v[A.f[i][1]], a.v[A.f[i][2]]));
+        best = std::min(best, pointTriangleDistance(b.v[j], a.v[A.f[i][0]], a.v[A.f[i][1]], a.v[A.f[i][2]]));
     for (int i : eA)
       if ((b.v[j] - a.ec[i]).norm() - a.er[i] < best)
-        best = std::min(best, pointSegment(b.v[j], a.v[A.e[i][0]], a.v[A.e[i][1]]));
+        best = std::min(best, pointSegmentDistance(b.v[j], a.v[A.e[i][0]], a.v[A.e[i][1]]));
   }
   for (int i : eA)
     for (int j : eB)
       if ((a.ec[i] - b.ec[j]).norm() - a.er[i] - b.er[j] < best)
-        best = std::min(best, segmentSegment(a.v[A.e[i][0]], a.v[A.e[i][1]], b.v[B.e[j][0]], b.v[B.e[j][1]]));
+        best = std::min(best, segmentSegmentDistance(a.v[A.e[i][0]], a.v[A.e[i][1]], b.v[B.e[j][0]], b.v[B.e[j][1]]));
   return std::max(LD(0), best - A.skin - B.skin);
 }
 
@@ -453,9 +352,9 @@ inline LD distance2d(const Body& A, const Placed& a, const Body& B, const Placed
   for (const auto& x : a.v)
     for (const auto& y : b.v) best = std::min(best, (x - y).norm());
   for (const auto& x : a.v)
-    for (const auto& f : B.e) best = std::min(best, pointSegment(x, b.v[f[0]], b.v[f[1]]));
+    for (const auto& f : B.e) best = std::min(best, pointSegmentDistance(x, b.v[f[0]], b.v[f[1]]));
   for (const auto& y : b.v)
-    for (const auto& e : A.e) best = std::min(best, pointSegment(y, a.v[e[0]], a.v[e[1]]));
+    for (const auto& e : A.e) best = std::min(best, pointSegmentDistance(y, a.v[e[0]], a.v[e[1]]));
   return std::max(LD(0), best - A.skin - B.skin);
 }
 
@@ -472,7 +371,7 @@ inline void poseAt(const MotionSpec& m, LD t, M3L& R, V3L& p) {
 class DistanceFunction {
  public:
   explicit DistanceFunction(const ToiQuery& q) : q_(q), A_(body(q.P)), B_(body(q.Q)) {
-    auto bound = [](const MotionSpec& m, const ShapeSpec& s) {
+    auto bound = [](const MotionSpec& m, const ShapeDescription& s) {
       return LD(m.v.norm()) + LD(m.a.norm()) + LD(m.w.norm()) * LD(s.boundingRadius());
     };
     lipschitz_ = (bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * LD(1.000001) + LD(1e-30);
@@ -497,29 +396,11 @@ class DistanceFunction {
   LD lipschitz_;
 };
 
-/// The first t in [ta, tb] with d(t) <= threshold (d(ta) > threshold), or -1; see the file comment.
-inline LD firstContact(DistanceFunction& d, LD threshold, LD ta, LD da, LD tb, LD db, int depth = 0) {
-  if ((da + db - d.lipschitz() * (tb - ta)) / 2 > threshold) return -1;  // proven free
-  if (tb - ta <= LD(1e-13) || depth > 60) return db <= threshold ? tb : (std::min(da, db) <= threshold ? ta : tb);
-  const LD tm = (ta + tb) / 2, dm = d(tm);
-  const LD left = firstContact(d, threshold, ta, da, tm, dm, depth + 1);
-  if (left >= 0) return left;
-  if (dm <= threshold) return tm;
-  return firstContact(d, threshold, tm, dm, tb, db, depth + 1);
-}
-
-/// The first time in [0, 1] the bodies come within `threshold` (0 if they start so), or -1.
-inline LD firstContact(DistanceFunction& d, LD threshold, int samples = 64) {
-  LD ta = 0, da = d(0);
-  if (da <= threshold) return 0;
-  for (int k = 1; k <= samples; ++k) {
-    const LD tb = LD(k) / samples, db = d(tb);
-    const LD t = firstContact(d, threshold, ta, da, tb, db);
-    if (t >= 0) return t;
-    ta = tb;
-    da = db;
-  }
-  return -1;
+/// The first time in [0, 1] the bodies come within `threshold` (0 if they start so), or -1:
+/// the reference library's dense sampling with bisection (gjkx/reference/time_of_impact.hpp)
+/// on d(t), 64 samples, bracket 1e-13.
+inline LD firstContact(DistanceFunction& d, LD threshold) {
+  return reference::firstContact(d, d.lipschitz(), threshold);
 }
 
 }  // namespace ref
@@ -538,18 +419,26 @@ inline void computeReference(ToiQuery& q) {
 
 /// Options of the generator.
 struct WorkloadOptions {
+  /// Queries in each workload.
   int queriesPerWorkload = 48;
+  /// Seed of the generator.
   std::uint64_t seed = 4;
 };
 
+/// The generator of the workloads.
 namespace gen {
 
 /// A small deterministic generator (the same numbers on every platform).
 struct Random {
+  /// The engine.
   std::mt19937_64 engine;
+  /// A generator from a seed.
   explicit Random(std::uint64_t seed) : engine(seed) {}
+  /// Uniform in [lo, hi), from the engine's top 53 bits.
   double uniform(double lo = 0, double hi = 1) { return lo + (hi - lo) * double(engine() >> 11) * 0x1.0p-53; }
+  /// Uniform in {0, ..., n - 1}.
   int integer(int n) { return int(engine() % std::uint64_t(n)); }
+  /// A random unit vector (rejection sampling in the unit ball).
   Eigen::Vector3d unit() {
     for (;;) {
       const Eigen::Vector3d x(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
@@ -557,39 +446,36 @@ struct Random {
       if (n > 0.1 && n <= 1) return x / n;
     }
   }
+  /// A random rotation (a uniform angle about a random axis).
   Eigen::Matrix3d rotation() { return Eigen::AngleAxisd(uniform(0, 2 * M_PI), unit()).toRotationMatrix(); }
 };
 
 /// n points on an ellipsoid of semi-axes `axes` (all on the hull).
-inline ShapeSpec polytopeSpec(Random& rng, int n, const Eigen::Vector3d& axes) {
+inline ShapeDescription randomPolytope(Random& rng, int n, const Eigen::Vector3d& axes) {
   std::vector<Vector3<double>> points;
   for (int k = 0; k < n; ++k) points.push_back(rng.unit().cwiseProduct(axes));
-  ShapeSpec s;
-  s.kind = ShapeKind::Polytope;
-  s.hull = std::make_shared<const Polytope<double>>(Polytope<double>::hull(points));
-  return s;
+  return polytopeDescription(points);
 }
 
-inline ShapeSpec polygonSpec(Random& rng, int n, double r) {
+/// A convex polygon of n vertices in z = 0, one in each of n equal angular sectors, at
+/// radius r (squeezed in y by a random 0.6 to 1).
+inline ShapeDescription randomPolygon(Random& rng, int n, double r) {
   std::vector<Vector3<double>> points;
   for (int k = 0; k < n; ++k) {
     const double a = 2 * M_PI * (k + rng.uniform(0.1, 0.9)) / n;
     points.emplace_back(r * std::cos(a), r * rng.uniform(0.6, 1.0) * std::sin(a), 0);
   }
-  ShapeSpec s;
-  s.kind = ShapeKind::Polygon;
-  s.hull = std::make_shared<const Polytope<double>>(Polytope<double>::polygon(points));
-  return s;
+  return polygonDescription(points);
 }
 
 /// A shape of medium size (about 0.3 to 0.8): box, capsule or polytope of 12, 100 or 1000 vertices.
-inline ShapeSpec mediumShape(Random& rng, int which) {
+inline ShapeDescription mediumShape(Random& rng, int which) {
   switch (which) {
-    case 0: return boxSpec(Eigen::Vector3d(rng.uniform(0.2, 0.6), rng.uniform(0.2, 0.6), rng.uniform(0.1, 0.5)));
-    case 1: return capsuleSpec(rng.uniform(0.2, 0.5), rng.uniform(0.1, 0.3));
-    case 2: return polytopeSpec(rng, 12, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
-    case 3: return polytopeSpec(rng, 100, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
-    default: return polytopeSpec(rng, 1000, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
+    case 0: return boxDescription(Eigen::Vector3d(rng.uniform(0.2, 0.6), rng.uniform(0.2, 0.6), rng.uniform(0.1, 0.5)));
+    case 1: return capsuleDescription(rng.uniform(0.2, 0.5), rng.uniform(0.1, 0.3));
+    case 2: return randomPolytope(rng, 12, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
+    case 3: return randomPolytope(rng, 100, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
+    default: return randomPolytope(rng, 1000, Eigen::Vector3d(rng.uniform(0.3, 0.6), rng.uniform(0.3, 0.6), rng.uniform(0.2, 0.5)));
   }
 }
 
@@ -609,7 +495,7 @@ inline Eigen::Vector3d sideways(Random& rng, const Eigen::Vector3d& dir, double 
 /// Two bodies flying at each other (hit: aimed within a fraction of the smaller size) or
 /// past each other (miss: the bounding spheres pass a clear margin apart), with the given
 /// acceleration and angular speed.
-inline ToiQuery encounter(Random& rng, ShapeSpec P, ShapeSpec Q, bool hit, double accel, double spin, double speed = 4) {
+inline ToiQuery encounter(Random& rng, ShapeDescription P, ShapeDescription Q, bool hit, double accel, double spin, double speed = 4) {
   ToiQuery q;
   q.P = std::move(P);
   q.Q = std::move(Q);
@@ -646,7 +532,7 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
   auto encounters = [&](const std::string& name, const std::string& description, double accel, double spin) {
     ToiWorkload w{name, description, false, {}};
     for (int k = 0; k < n; ++k) {
-      ShapeSpec P = shapeP(k), Q = shapeQ(k);
+      ShapeDescription P = shapeP(k), Q = shapeQ(k);
       w.queries.push_back(gen::encounter(rng, std::move(P), std::move(Q), k % 3 != 2, accel, spin));
     }
     out.push_back(std::move(w));
@@ -661,10 +547,10 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
     ToiWorkload w{"thin_plate", "small box (0.01-0.05) at speed 2-6 through a plate 0.005 thick; 1/4 pass beside it", false, {}};
     for (int k = 0; k < n; ++k) {
       ToiQuery q;
-      q.Q = boxSpec(Eigen::Vector3d(1, 1, 0.0025));
+      q.Q = boxDescription(Eigen::Vector3d(1, 1, 0.0025));
       q.motionQ.R0 = Eigen::Matrix3d::Identity();
       const double h = rng.uniform(0.01, 0.05);
-      q.P = k % 2 ? boxSpec(Eigen::Vector3d(h, h, h)) : gen::polytopeSpec(rng, 12, Eigen::Vector3d(h, h, h));
+      q.P = k % 2 ? boxDescription(Eigen::Vector3d(h, h, h)) : gen::randomPolytope(rng, 12, Eigen::Vector3d(h, h, h));
       q.motionP.R0 = rng.rotation();
       const double speed = rng.uniform(2, 6);
       const bool beside = k % 4 == 3;
@@ -679,8 +565,8 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
     ToiWorkload w{"small_fast", "small sphere/box/poly12 (0.01-0.04) at speed 10-20 at a medium body; 1/3 aimed to miss", false, {}};
     for (int k = 0; k < n; ++k) {
       const double h = rng.uniform(0.01, 0.04);
-      ShapeSpec P = k % 3 == 0 ? sphereSpec(h) : (k % 3 == 1 ? boxSpec(Eigen::Vector3d(h, h, h)) : gen::polytopeSpec(rng, 12, Eigen::Vector3d(h, h, h)));
-      ShapeSpec Q = gen::mediumShape(rng, k % 8 == 5 ? 4 : k % 4);
+      ShapeDescription P = k % 3 == 0 ? sphereDescription(h) : (k % 3 == 1 ? boxDescription(Eigen::Vector3d(h, h, h)) : gen::randomPolytope(rng, 12, Eigen::Vector3d(h, h, h)));
+      ShapeDescription Q = gen::mediumShape(rng, k % 8 == 5 ? 4 : k % 4);
       w.queries.push_back(gen::encounter(rng, std::move(P), std::move(Q), k % 3 != 1, 0, k % 2 ? 0 : 4.0, rng.uniform(10, 20)));
     }
     out.push_back(std::move(w));
@@ -695,7 +581,7 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
       q.motionQ.R0 = rng.rotation();
       // P's lowest point passes straight over Q's highest point, `gap` above it (negative: a graze).
       // The z extents come from the reference's own vertices (cores, plus the skins).
-      auto extreme = [](const ShapeSpec& s, const Eigen::Matrix3d& R, double sign) {
+      auto extreme = [](const ShapeDescription& s, const Eigen::Matrix3d& R, double sign) {
         const ref::Body b = ref::body(s);
         Eigen::Vector3d best = Eigen::Vector3d::Zero();
         double value = -1e300;
@@ -751,7 +637,7 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
     ToiWorkload w{"planar_2d", "polygons of 3-8 vertices and disks in z = 0, linear + spin up to 3 rad; 2/3 aimed to hit", true, {}};
     for (int k = 0; k < n; ++k) {
       auto planarShape = [&](int j) {
-        return j % 4 == 3 ? diskSpec(rng.uniform(0.2, 0.5)) : gen::polygonSpec(rng, 3 + rng.integer(6), rng.uniform(0.3, 0.8));
+        return j % 4 == 3 ? diskDescription(rng.uniform(0.2, 0.5)) : gen::randomPolygon(rng, 3 + rng.integer(6), rng.uniform(0.3, 0.8));
       };
       ToiQuery q;
       q.planar = true;
@@ -780,4 +666,4 @@ inline std::vector<ToiWorkload> makeWorkloads(const WorkloadOptions& o) {
   return out;
 }
 
-}  // namespace gjkx::toistudy
+}  // namespace gjkx::study
