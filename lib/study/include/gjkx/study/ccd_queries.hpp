@@ -47,6 +47,7 @@ struct InputError : std::runtime_error {
   std::string file;   ///< the file
   int line = 0;       ///< its 1-based line
   std::string field;  ///< the offending field (xnum ... zden, truth, row, rows, kind)
+  /// The error at `file_`:`line_` (0: the whole file) in `field_`.
   InputError(const std::string& file_, int line_, const std::string& field_, const std::string& what)
       : std::runtime_error(file_ + (line_ > 0 ? ":" + std::to_string(line_) : std::string()) + ": " + field_ + ": " +
                            what),
@@ -57,8 +58,8 @@ struct InputError : std::runtime_error {
 
 /// One query: 8 vertices (rows in the file's order) and the ground truth.
 struct Query {
-  std::array<gjkx::Vector3<double>, 8> vertices;
-  bool truth = false;
+  std::array<gjkx::Vector3<double>, 8> vertices;  ///< the 8 rows' vertices
+  bool truth = false;                             ///< the benchmark's answer: the primitives touch in [0, 1]
   int line = 0;  ///< the line of its first row
 };
 
@@ -66,8 +67,8 @@ struct Query {
 struct QueryFile {
   std::string path;     ///< as opened
   std::string name;     ///< as reported (relative to the searched folder, or the path)
-  QueryKind kind = QueryKind::VertexFace;
-  std::vector<Query> queries;
+  QueryKind kind = QueryKind::VertexFace;  ///< vertex-face or edge-edge (the folder's name)
+  std::vector<Query> queries;              ///< its queries, in the file's order
 };
 
 /// The kind of a file from its parent folder's name; throws InputError otherwise.
@@ -181,7 +182,8 @@ inline std::vector<QueryFile> readQueryFolder(const std::filesystem::path& folde
 /// The two moving primitives of a query in scalar S (float rounds the double coordinates).
 template <typename S>
 struct QueryBodies {
-  gjkx::DeformingSimplex<S> P, Q;
+  gjkx::DeformingSimplex<S> P;  ///< the vertex (edge-edge: edge a)
+  gjkx::DeformingSimplex<S> Q;  ///< the face (edge-edge: edge b)
 };
 
 /// P = the vertex (edge a), Q = the face (edge b), over [0, 1].
@@ -200,9 +202,13 @@ template <typename S>
 struct FileRun {
   std::vector<gjkx::ToiResult<S>> results;  ///< one per query
   double seconds = 0;                       ///< solver time only (parsing and set-up excluded)
-  int positives = 0, falseNegatives = 0, falsePositives = 0, capped = 0;
-  int photoFinishes = 0, maxBrentIterations = 0;
-  long long brentIterations = 0;
+  int positives = 0;            ///< queries counted as colliding (`positive`)
+  int falseNegatives = 0;       ///< ground truth colliding, reported not
+  int falsePositives = 0;       ///< reported colliding, ground truth not
+  int capped = 0;               ///< iteration caps
+  int photoFinishes = 0;        ///< photo finishes (§5)
+  int maxBrentIterations = 0;   ///< the most Brent iterations of one query
+  long long brentIterations = 0;  ///< Brent iterations of all queries
 };
 
 /// Counted as colliding: `reportsCollision` (hit, starting in contact, and the undecided

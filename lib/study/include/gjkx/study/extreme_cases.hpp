@@ -78,22 +78,25 @@ struct ToiCase {
   std::string name;   ///< e.g. "touching faces"
   std::string setup;  ///< what the bodies do, in one line
   ToiQuery query;     ///< the 3D query; refHit and tRef from the long-double reference
-  bool hasPlanarForm = false;
+  bool hasPlanarForm = false;  ///< the case has a 2D form (for Box2D)
   ToiQuery planar;    ///< the 2D form (cross-sections in z = 0), when hasPlanarForm
-  Expect expect = Expect::Hit;
+  Expect expect = Expect::Hit;  ///< what a correct method must say
   double delta = 0.01;  ///< the judging tolerance of a hit (a length)
-  std::string deltaWhy;
+  std::string deltaWhy;  ///< why delta is what it is, in words
   double closedForm = std::numeric_limits<double>::quiet_NaN();  ///< t_ref by a closed form, NaN if none
   double lipschitz = 0;  ///< L of the reference: |d'(t)| <= L
 };
 
 /// One static pair with its reference.
 struct StaticCase {
-  std::string name, setup;
-  ShapeDescription P, Q;
-  Pose<double> poseP, poseQ;
+  std::string name;        ///< e.g. "touching faces"
+  std::string setup;       ///< what the pair is, in one line
+  ShapeDescription P;      ///< the first shape
+  ShapeDescription Q;      ///< the second shape
+  Pose<double> poseP;      ///< P's pose
+  Pose<double> poseQ;      ///< Q's pose
   double reference = 0;  ///< long-double brute-force distance (0: touching or overlapping)
-  double closedForm = std::numeric_limits<double>::quiet_NaN();
+  double closedForm = std::numeric_limits<double>::quiet_NaN();  ///< the distance by a closed form
   double scale = 1;  ///< largest coordinate (at least 1)
   double tau = 1e-6;  ///< 1e-6 * scale
 };
@@ -101,9 +104,12 @@ struct StaticCase {
 // ---------------------------------------------------------------------------------------
 // Building the cases
 
+/// Builders of the cases.
 namespace build {
 
+/// A rotation by a about z.
 inline Eigen::Matrix3d rotZ(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+/// A rotation by a about `axis` (any nonzero length).
 inline Eigen::Matrix3d rotAxis(double a, const Eigen::Vector3d& axis) {
   return Eigen::AngleAxisd(a, axis.normalized()).toRotationMatrix();
 }
@@ -123,6 +129,7 @@ inline ShapeDescription crossSection(const ShapeDescription& s) {
   return rectangle(s.halfExtents.x(), s.halfExtents.y());
 }
 
+/// Whether a motion stays in the plane z = 0 and turns about z only.
 inline bool inPlane(const MotionSpec& m) {
   const Eigen::Matrix3d R = m.R0;
   return m.p0.z() == 0 && m.v.z() == 0 && m.a.z() == 0 && m.w.x() == 0 && m.w.y() == 0 && R(2, 2) == 1 && R(0, 2) == 0 &&
@@ -148,6 +155,7 @@ using reference::firstRoot;
 
 /// The lowest y of a z-rotated box's cross-section (half extents hx, hy, angle a), relative to its centre.
 inline LD lowestY(LD hx, LD hy, LD a) { return -(hx * std::abs(std::sin(a)) + hy * std::abs(std::cos(a))); }
+/// The largest x of a z-rotated box's cross-section, relative to its centre.
 inline LD rightmostX(LD hx, LD hy, LD a) { return hx * std::abs(std::cos(a)) + hy * std::abs(std::sin(a)); }
 
 }  // namespace build
@@ -407,21 +415,21 @@ inline std::vector<StaticCase> makeStaticCases() {
 
 /// A time-of-impact answer.
 struct ToiAnswer {
-  AnswerKind kind = AnswerKind::Answer;
-  bool hit = false;
-  double time = 1;
+  AnswerKind kind = AnswerKind::Answer;  ///< how it came back
+  bool hit = false;                      ///< the method reports a collision
+  double time = 1;                       ///< its time of impact
   char status[48] = "";   ///< the method's own status name, if it has one
   char message[160] = "";  ///< an exception's what()
 };
 
 /// A static answer: a distance (overlap: <= 0) or a yes/no.
 struct GjkAnswer {
-  AnswerKind kind = AnswerKind::Answer;
-  bool boolean = false;
+  AnswerKind kind = AnswerKind::Answer;  ///< how it came back
+  bool boolean = false;                  ///< a yes/no method (else a distance)
   bool overlap = false;  ///< boolean methods
   double distance = 0;   ///< distance methods (<= 0: overlapping)
-  char status[48] = "";
-  char message[160] = "";
+  char status[48] = "";    ///< the method's own status name, if it has one
+  char message[160] = "";  ///< an exception's what()
 };
 
 // ---------------------------------------------------------------------------------------
@@ -430,6 +438,7 @@ struct GjkAnswer {
 /// A cell of the table.
 enum class Verdict { Right, Wrong, NaN, Hang, Crash, Cap, NotApplicable };
 
+/// The verdict's word in the table.
 inline const char* toString(Verdict v) {
   switch (v) {
     case Verdict::Right: return "right";
@@ -445,13 +454,15 @@ inline const char* toString(Verdict v) {
 
 /// A judged cell: the verdict, a short reason ("miss", "late +3e-02"), and what the method said.
 struct Cell {
-  Verdict verdict = Verdict::NotApplicable;
+  Verdict verdict = Verdict::NotApplicable;  ///< the verdict
   std::string reason;  ///< short, for the table
   std::string said;    ///< what the method answered, for the notes
-  double seconds = 0;
+  double seconds = 0;  ///< wall time of the guarded run
+  /// "verdict: reason", for the table.
   std::string text() const { return reason.empty() ? toString(verdict) : std::string(toString(verdict)) + ": " + reason; }
 };
 
+/// x in scientific notation with `digits` digits after the point.
 inline std::string sci(double x, int digits = 1) {
   char s[32];
   std::snprintf(s, sizeof s, "%.*e", digits, x);
@@ -673,14 +684,14 @@ struct ToiMethod {
   bool library = false;       ///< a solver of the library (the test asserts these)
   bool planarOnly = false;    ///< runs on the 2D form only (Box2D)
   bool detectionOnly = false;  ///< yes/no, no time
-  std::function<ToiAnswer(const ToiQuery&)> run;
+  std::function<ToiAnswer(const ToiQuery&)> run;  ///< the method on a query
 };
 
 /// A static method of the table.
 struct GjkMethod {
-  std::string name;
-  bool library = false;
-  std::function<GjkAnswer(const StaticCase&)> run;
+  std::string name;                                 ///< column header
+  bool library = false;                             ///< a solver of the library (the test asserts these)
+  std::function<GjkAnswer(const StaticCase&)> run;  ///< the method on a case
 };
 
 /// The time-of-impact methods of ours: static sampling, swept, CA, the paper's solver and

@@ -23,7 +23,7 @@
 ///   a disk as one vertex with its radius) and b2Sweep (centre and angle at t = 0 and 1).
 ///   Box2D aims at a separation of b2_linearSlop (0.005) between the cores, within
 ///   0.25 b2_linearSlop, by design (its solver wants a small gap, not contact).
-/// Every peer-dependent line is inside #if GJKX_HAVE_FCL / _BULLET / _BOX2D.
+/// Every peer-dependent line is inside `#if GJKX_HAVE_FCL / _BULLET / _BOX2D`.
 #pragma once
 
 #include <gjkx/study/peers.hpp>

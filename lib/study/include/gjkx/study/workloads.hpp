@@ -160,6 +160,8 @@ inline double relativeSpeedBound(const ToiQuery& q) {
 
 // ---------------------------------------------------------------------------------------
 // The reference (long double)
+/// The time-of-impact study's independent reference: long-double distances of placed
+/// shapes and their first contact over [0, 1] (see the file comment).
 namespace ref {
 
 // The closest points and the contact test come from the reference library (long double,
@@ -171,14 +173,15 @@ using reference::segmentSegmentDistance;
 
 /// A shape's core (vertices, edges, triangles) and skin radius, in the body frame.
 struct Body {
-  std::vector<V3L> v;
-  std::vector<std::array<int, 2>> e;
-  std::vector<std::array<int, 3>> f;
-  LD skin = 0;
+  std::vector<V3L> v;                  ///< the core's vertices
+  std::vector<std::array<int, 2>> e;   ///< its edges (vertex pairs)
+  std::vector<std::array<int, 3>> f;   ///< its triangles (a closed polytope's)
+  LD skin = 0;                         ///< the radius around the core (sphere, capsule, disk)
   bool solid = false;   ///< closed polytope: containment counts
   LD radius = 0;        ///< bounding radius of the whole shape about the body origin
 };
 
+/// The reference's body for a shape description.
 inline Body body(const ShapeDescription& s) {
   Body b;
   b.radius = LD(s.boundingRadius());
@@ -223,13 +226,16 @@ inline Body body(const ShapeDescription& s) {
 
 /// A body placed in the world, with a bounding sphere per feature.
 struct Placed {
-  std::vector<V3L> v;
-  std::vector<V3L> ec, fc;  // edge / triangle centres
-  std::vector<LD> er, fr;   // and radii
-  V3L centre;
-  LD radius;
+  std::vector<V3L> v;   ///< the vertices in the world
+  std::vector<V3L> ec;  ///< the edges' centres
+  std::vector<V3L> fc;  ///< the triangles' centres
+  std::vector<LD> er;   ///< the edges' bounding radii
+  std::vector<LD> fr;   ///< the triangles' bounding radii
+  V3L centre;           ///< the body origin in the world
+  LD radius;            ///< the core's bounding radius about it
 };
 
+/// Places a body at the pose (R, p), with each feature's bounding sphere.
 inline void place(const Body& b, const M3L& R, const V3L& p, Placed& w) {
   w.v.resize(b.v.size());
   for (std::size_t i = 0; i < b.v.size(); ++i) w.v[i] = R * b.v[i] + p;
@@ -254,6 +260,7 @@ inline void place(const Body& b, const M3L& R, const V3L& p, Placed& w) {
   w.radius = b.radius - b.skin;
 }
 
+/// Whether x is inside a placed solid body (behind every triangle).
 inline bool inside(const V3L& x, const Body& b, const Placed& w) {
   for (const auto& f : b.f) {
     const V3L& a = w.v[f[0]];
@@ -325,11 +332,14 @@ inline LD distance(const Body& A, const Placed& a, const Body& B, const Placed& 
 }
 
 // 2D (z = 0): polygons as vertex loops (edges from the hull's neighbours), disks as points.
+/// The z of the cross product of a and b (2D).
 inline LD cross2(const V3L& a, const V3L& b) { return a.x() * b.y() - a.y() * b.x(); }
+/// Whether the segments [p, q] and [r, s] of the plane cross properly.
 inline bool segmentsCross2(const V3L& p, const V3L& q, const V3L& r, const V3L& s) {
   const LD d1 = cross2(q - p, r - p), d2 = cross2(q - p, s - p), d3 = cross2(s - r, p - r), d4 = cross2(s - r, q - r);
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
+/// Whether x is inside a placed convex polygon.
 inline bool inside2(const V3L& x, const Body& b, const Placed& w) {
   if (b.e.size() < 3) return false;
   // Convex polygon: x is inside when it is on the same side of every edge as the centroid.
@@ -343,6 +353,7 @@ inline bool inside2(const V3L& x, const Body& b, const Placed& w) {
   }
   return true;
 }
+/// The distance between two placed 2D bodies (0 in contact).
 inline LD distance2d(const Body& A, const Placed& a, const Body& B, const Placed& b) {
   for (const auto& e : A.e)
     for (const auto& f : B.e)
@@ -370,12 +381,14 @@ inline void poseAt(const MotionSpec& m, LD t, M3L& R, V3L& p) {
 /// A query's distance function d(t) and its Lipschitz bound L.
 class DistanceFunction {
  public:
+  /// The distance function of a query (which must outlive it).
   explicit DistanceFunction(const ToiQuery& q) : q_(q), A_(body(q.P)), B_(body(q.Q)) {
     auto bound = [](const MotionSpec& m, const ShapeDescription& s) {
       return LD(m.v.norm()) + LD(m.a.norm()) + LD(m.w.norm()) * LD(s.boundingRadius());
     };
     lipschitz_ = (bound(q.motionP, q.P) + bound(q.motionQ, q.Q)) * LD(1.000001) + LD(1e-30);
   }
+  /// d(t): the distance of the query's bodies at t.
   LD operator()(LD t) {
     M3L R;
     V3L p;
@@ -386,7 +399,9 @@ class DistanceFunction {
     ++evaluations;
     return q_.planar ? distance2d(A_, a_, B_, b_) : distance(A_, a_, B_, b_);
   }
+  /// L: |d'(t)| <= L over [0, 1].
   LD lipschitz() const { return lipschitz_; }
+  /// Evaluations of d so far.
   long evaluations = 0;
 
  private:
