@@ -1023,6 +1023,30 @@ TEST_CASE("the iteration cap never says no collision", "[toi][hard][cap]") {
   CHECK(timeOfImpact(rod, ball, 0.0, 1.0, settings).status == ToiStatus::Hit);
 }
 
+// The query runs in the frame of P (timeOfImpact's comment): the same head-on approach far
+// from the world's origin, at x, y = 10^5 where float's spacing is 0.0078, gives the time it
+// gives at the origin, and its witness points in the world. Without the frame, GJK's support
+// points at 10^5 carry that spacing and the time was off by up to 3e-3 in float.
+TEMPLATE_TEST_CASE("time of impact in P's frame: as accurate far from the origin as at it", "[toi][hard][origin]", float,
+                   double) {
+  using S = TestType;
+  ToiSettings<S> settings;
+  const S tol = settings.collisionTolerance;
+  const double expected = (2.0 - double(tol)) / 4.0;
+  for (const double offset : {0.0, 1e5, -3e5}) {
+    const Vector3<S> at{S(offset), S(offset), S(0)};
+    const auto P = fixedAt(unitBox<S>(), at);
+    const auto Q = translating(unitBox<S>(), Vector3<S>(at + Vector3<S>(3, 0.25, 0)), Vector3<S>(-4, 0, 0));
+    const auto r = timeOfImpact(P, Q, S(0), S(1), settings);
+    INFO(scalarName<S>() << " at " << offset << ": status " << toString(r.status) << ", time " << r.time);
+    REQUIRE(r.status == ToiStatus::Hit);
+    CHECK(std::abs(double(r.time) - expected) <= double(tol) / 4 + double(settings.timeTolerance));
+    // The witnesses are in the world: on P's right face and Q's left face, near `at`.
+    CHECK(double(r.witnessP.x()) == Approx(offset + 0.5).margin(1e-2));
+    CHECK(double(r.witnessQ.x()) == Approx(offset + 0.5 + double(r.distance)).margin(1e-2));
+  }
+}
+
 // Bad input names the field.
 TEST_CASE("time of impact refuses a bad interval or tolerance", "[toi][input]") {
   const auto P = fixedAt(unitBox<double>(), Vector3<double>(0, 0, 0));

@@ -56,9 +56,12 @@
 
 #include <gjkx/brent/root_finder.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/support_mapping/deforming_simplex.hpp>
+#include <gjkx/support_mapping/placed.hpp>
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -183,13 +186,14 @@ struct ToiResult {
 namespace detail {
 
 /// The contact data of the complete test `test` at its start `time` (the exact distance,
-/// the witness points and the unit normal from P towards Q), into `result`.
+/// the witness points and the unit normal from P towards Q), into `result`. The test ran in
+/// the query's frame, whose origin is at `origin` in the world: the witnesses move back there.
 template <typename S>
-void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test) {
+void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test, const Vector3<S>& origin) {
   result.time = time;
   result.distance = test.distanceAtStart;
-  result.witnessP = test.witnessP;
-  result.witnessQ = test.witnessQ;
+  result.witnessP = test.witnessP + origin;
+  result.witnessQ = test.witnessQ + origin;
   const Vector3<S> z = test.witnessQ - test.witnessP;
   result.normal = z.norm() > S(0) ? Vector3<S>(z.normalized()) : Vector3<S>::Zero();
 }
@@ -207,9 +211,12 @@ class ToiSolver {
   /// Q placed at a time.
   using PlacedQ = decltype(std::declval<const MovingQ&>().at(S(0)));
 
-  /// A query over \f$[t_0, t_1]\f$ (checked by `timeOfImpact`); `trace` may be null.
-  ToiSolver(const MovingP& P, const MovingQ& Q, S t0, S t1, const ToiSettings<S>& settings, ToiTrace<S>* trace)
-      : P_(P),
+  /// A query over \f$[t_0, t_1]\f$ (checked by `timeOfImpact`); `trace` may be null. P and Q
+  /// are seen from the query's frame, whose origin is at `origin` in the world.
+  ToiSolver(const MovingP& P, const MovingQ& Q, S t0, S t1, const ToiSettings<S>& settings, ToiTrace<S>* trace,
+            const Vector3<S>& origin = Vector3<S>::Zero())
+      : origin_(origin),
+        P_(P),
         Q_(Q),
         t0_(t0),
         t1_(t1),
@@ -303,7 +310,7 @@ class ToiSolver {
         result_.time = t0_;
         break;
       case ExtrusionStatus::CollidingAtStart:
-        takeContact(result_, t0_, last_);
+        takeContact(result_, t0_, last_, origin_);
         result_.status = movingApart() ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
         break;
       case ExtrusionStatus::Undecided: break;  // not a verdict: solve() goes on to Brent
@@ -438,7 +445,7 @@ class ToiSolver {
   /// complete test there.
   ToiResult<S> hit(S time, const ExtrusionResult<S>& test) {
     result_.status = ToiStatus::Hit;
-    takeContact(result_, time, test);
+    takeContact(result_, time, test, origin_);
     return result_;
   }
 
@@ -465,11 +472,14 @@ class ToiSolver {
   /// of contact, \f$t_a\f$.
   ToiResult<S> iterationCap() {
     result_.status = ToiStatus::IterationCap;
-    takeContact(result_, ta_, last_);
+    takeContact(result_, ta_, last_, origin_);
     return result_;
   }
 
-  /// The moving body P.
+  /// Where the query's frame has its origin, in the world (P's position at \f$t_0\f$; see
+  /// `timeOfImpact`).
+  Vector3<S> origin_;
+  /// The moving body P, seen from the query's frame.
   const MovingP& P_;
   /// The moving body Q.
   const MovingQ& Q_;
@@ -519,11 +529,39 @@ class ToiSolver {
   bool creeping_ = false;
 };
 
+/// A point of P at \f$t_0\f$ to put the query's origin at: the body origin of a rigid body,
+/// the first vertex of a deforming simplex.
+template <typename Shape>
+Vector3<typename Shape::Scalar> queryOrigin(const Moving<Shape>& P, typename Shape::Scalar t0) {
+  return P.motion.pose(t0).translation;
+}
+/// The same for a deforming simplex.
+template <typename S>
+Vector3<S> queryOrigin(const DeformingSimplex<S>& P, S t0) {
+  return P.at(t0).points[0];
+}
+
+/// True for a body type that can be seen from another frame (`translated(offset)`).
+template <typename X, typename = void>
+struct CanTranslate : std::false_type {};
+/// True for a body type that can be seen from another frame (`translated(offset)`).
+template <typename X>
+struct CanTranslate<X, std::void_t<decltype(std::declval<const X&>().translated(
+                           std::declval<const Vector3<typename X::Scalar>&>()))>> : std::true_type {};
+
 }  // namespace detail
 
 /// Non-collision or the time of impact of two moving bodies over \f$[t_0, t_1]\f$ (§5); see
 /// the file comment. The bodies are any types with `at(t)` and `accelerationBound()`
 /// (`Moving<Shape>`, `DeformingSimplex`). Throws std::invalid_argument for a bad interval.
+///
+/// The query runs in the frame of P: both bodies are seen from an origin at P's position at
+/// \f$t_0\f$ (as Box2D v3 runs its queries in the frame of its first shape), and the witness
+/// points are moved back to the world. Far from the world's origin this keeps GJK's
+/// arithmetic on the bodies' small relative coordinates: in float at coordinates near
+/// \f$10^5\f$ (spacing 0.0078) the time of impact is then as accurate as in double (measured
+/// by the study's extreme cases, docs 09). The translation itself is exact in floating
+/// point for bodies near the origin chosen (Sterbenz's lemma).
 template <typename MovingP, typename MovingQ>
 ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
                                                  typename MovingP::Scalar t1,
@@ -532,6 +570,14 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   using S = typename MovingP::Scalar;
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
+  if constexpr (detail::CanTranslate<MovingP>::value && detail::CanTranslate<MovingQ>::value) {
+    const Vector3<S> origin = detail::queryOrigin(P, t0);
+    if (origin.allFinite() && origin.squaredNorm() > S(0)) {
+      const MovingP localP = P.translated(-origin);
+      const MovingQ localQ = Q.translated(-origin);
+      return detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0, t1, settings, trace, origin).solve();
+    }
+  }
   return detail::ToiSolver<MovingP, MovingQ>(P, Q, t0, t1, settings, trace).solve();
 }
 

@@ -8,6 +8,7 @@
 
 #include <gjkx/motion/pose.hpp>
 
+#include <type_traits>
 #include <variant>
 
 namespace gjkx {
@@ -201,6 +202,26 @@ class Motion {
   /// Bounds of the motion's acceleration and rotation (for the certified extrusion test).
   MotionBound<Scalar> bound() const {
     return std::visit([](const auto& m) { return m.bound(); }, motion_);
+  }
+  /// The same motion seen from a frame whose origin sits at `-offset`: every pose's
+  /// translation moved by `offset`, nothing else changed. A query runs in the frame of one
+  /// of its bodies this way (time_of_impact.hpp), as Box2D v3 runs its queries in the frame
+  /// of the first shape, so that its arithmetic works on the bodies' small relative
+  /// coordinates rather than on large world ones. In float, moving a translation by a
+  /// nearby float is exact (Sterbenz's lemma), so nothing of the input is lost.
+  Motion translated(const Vector3<Scalar>& offset) const {
+    Motion moved = *this;
+    std::visit(
+        [&offset](auto& m) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(m)>, PoseInterpolation<Scalar>>) {
+            m.from.translation += offset;
+            m.to.translation += offset;
+          } else {
+            m.start.translation += offset;
+          }
+        },
+        moved.motion_);
+    return moved;
   }
   /// True for a body that never moves (lets a scene skip its work).
   bool isStatic() const { return std::holds_alternative<StaticMotion<Scalar>>(motion_); }

@@ -90,6 +90,16 @@ class DeformingSimplex {
   /// Vertices move on straight lines at constant speed: no acceleration, and the
   /// supporting distance is concave in t (see the file comment), so no margin is needed.
   S accelerationBound() const { return S(0); }
+  /// The same simplex seen from a frame whose origin sits at `-offset`: every vertex moved
+  /// by `offset` at both ends (see Motion::translated).
+  DeformingSimplex translated(const Vector3<S>& offset) const {
+    DeformingSimplex moved = *this;
+    for (int k = 0; k < count_; ++k) {
+      moved.start_[k] += offset;
+      moved.end_[k] += offset;
+    }
+    return moved;
+  }
   /// Number of vertices.
   int vertexCount() const { return count_; }
   /// Vertex k at t0.

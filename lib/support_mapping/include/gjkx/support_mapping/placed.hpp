@@ -72,6 +72,8 @@ struct Moving {
   Placed<Shape> at(Scalar t) const { return Placed<Shape>{shape, motion.pose(t)}; }
   /// \f$S_{X(t)}(\vec{s})\f$.
   Vector3<Scalar> support(const Vector3<Scalar>& s, Scalar t) const { return at(t).support(s); }
+  /// The same body seen from a frame whose origin sits at `-offset` (Motion::translated).
+  Moving translated(const Vector3<Scalar>& offset) const { return Moving{shape, motion.translated(offset)}; }
   /// The largest acceleration of a point of the body: \f$a + \alpha r + \omega^2 r\f$ with r the
   /// shape's bounding radius about its body origin (the centre of rotation).
   Scalar accelerationBound() const { return motion.bound().pointAcceleration(shape.boundingRadius()); }
