@@ -23,7 +23,9 @@ namespace chapter {
 inline std::string outputFolder(int argc, char** argv) {
   std::string out = ".";
   CLI::App app{"Draws this chapter's figures of the paper as PNG files in DIR."};
-  app.add_option("--out", out, "the folder for the PNG files, created if needed")->type_name("DIR")->capture_default_str();
+  app.add_option("--out", out, "the folder for the PNG files, created if needed")
+      ->type_name("DIR")
+      ->capture_default_str();
   parseOrExit(app, argc, argv);
   std::filesystem::create_directories(out);
   return out;

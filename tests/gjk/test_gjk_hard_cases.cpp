@@ -8,6 +8,7 @@
 #include "to_reference.hpp"
 
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/support_mapping/polytope.hpp>
 #include <gjkx/support_mapping/primitives.hpp>
@@ -25,11 +26,6 @@ using gjkx::test::Real;
 using gjkx::test::RVec;
 
 namespace {
-
-template <typename S>
-S eps() {
-  return std::numeric_limits<S>::epsilon();
-}
 
 // A run ended properly: a real answer (Separated or Overlapping, never the cap), within
 // the cap, and no NaN anywhere in what it says.
@@ -130,7 +126,7 @@ TEMPLATE_TEST_CASE("hard: boxes a sub-epsilon gap apart", "[gjk][hard]", float, 
     const GjkResult<S> r = gjk(place(unit, Pose<S>::identity()), place(unit, Pose<S>::translate({x, 0, 0})));
     checkEnds(r);
     INFO("distance " << r.distance << ", truth " << double(truth));
-    if (r.status == GjkStatus::Separated) CHECK(std::abs(Real(r.distance) - truth) <= 4 * eps<S>());
+    if (r.status == GjkStatus::Separated) CHECK(std::abs(Real(r.distance) - truth) <= 4 * machineEpsilon<S>());
   }
   std::mt19937 rng(42);
   for (int trial = 0; trial < 200; ++trial) {
@@ -140,7 +136,7 @@ TEMPLATE_TEST_CASE("hard: boxes a sub-epsilon gap apart", "[gjk][hard]", float, 
     const GjkResult<S> r = gjk(place(unit, poseP), place(unit, poseQ));
     INFO("trial " << trial << ": " << toString(r.status) << " at " << r.distance);
     checkEnds(r);
-    if (r.status == GjkStatus::Separated) CHECK(std::abs(Real(r.distance) - truth) <= 64 * eps<S>());
+    if (r.status == GjkStatus::Separated) CHECK(std::abs(Real(r.distance) - truth) <= 64 * machineEpsilon<S>());
   }
 }
 
@@ -199,7 +195,7 @@ TEMPLATE_TEST_CASE("hard: a segment exactly in line with a box edge", "[gjk][har
   // The box [-0.5, 0.5]^3 has an edge from (-0.5, 0.5, 0.5) to (0.5, 0.5, 0.5).
   using S = TestType;
   const auto box = place(Box<S>(Vector3<S>(S(0.5), S(0.5), S(0.5))), Pose<S>::identity());
-  const Real tol = 64 * eps<S>();
+  const Real tol = 64 * machineEpsilon<S>();
   // On the edge's line, beyond its end: distance 0.5 (end to end, every simplex collinear).
   checkDistance(gjk(box, Segment<S>({1, S(0.5), S(0.5)}, {2, S(0.5), S(0.5)})), 0.5, tol);
   checkDistance(gjk(Segment<S>({2, S(0.5), S(0.5)}, {1, S(0.5), S(0.5)}), box), 0.5, tol);
@@ -221,7 +217,7 @@ TEMPLATE_TEST_CASE("hard: a sliver triangle against points", "[gjk][hard]", floa
   using S = TestType;
   const S h = S(1e-9);
   const Triangle<S> sliver({-1, -h, 0}, {1, -h, 0}, {0, h, 0});
-  const Real tol = 64 * eps<S>();
+  const Real tol = 64 * machineEpsilon<S>();
   checkDistance(gjk(sliver, Point<S>(Vector3<S>(0, 0, 1))), 1.0, tol);              // above the inside
   checkDistance(gjk(sliver, Point<S>(Vector3<S>(S(0.3), 0, S(1e-3)))), 1e-3, tol);  // just above the inside
   checkDistance(gjk(sliver, Point<S>(Vector3<S>(3, 0, 0))), 2.0, tol);              // beyond a vertex, in line
@@ -245,7 +241,7 @@ TEMPLATE_TEST_CASE("hard: a 1e-2 box next to a 1e2 box (size ratio 1e4)", "[gjk]
   const auto big = place(Box<S>(Vector3<S>(50, 50, 50)), Pose<S>::identity());
   const Box<S> small(Vector3<S>(S(0.005), S(0.005), S(0.005)));
   const S c = S(51.005);
-  const Real tol = 64 * eps<S>() * 50;
+  const Real tol = 64 * machineEpsilon<S>() * 50;
   checkDistance(gjk(big, place(small, Pose<S>::translate({c, 0, 0}))), 1.0, tol);
   checkDistance(gjk(big, place(small, Pose<S>::translate({c, c, 0}))), std::sqrt(2.0L), tol);
   checkDistance(gjk(place(small, Pose<S>::translate({-c, c, -c})), big), std::sqrt(3.0L), tol);
@@ -263,7 +259,7 @@ TEMPLATE_TEST_CASE("hard: unit boxes near x = 1e5 with a gap of 1", "[gjk][hard]
   // Then both turned and moved to (1e5, 1e5, 1e5).
   using S = TestType;
   const Box<S> unit(Vector3<S>(S(0.5), S(0.5), S(0.5)));
-  const Real tol = sizeof(S) == sizeof(float) ? Real(0.05) : Real(64 * eps<double>() * 1e5);
+  const Real tol = sizeof(S) == sizeof(float) ? Real(0.05) : Real(64 * machineEpsilon<double>() * 1e5);
   checkDistance(gjk(place(unit, Pose<S>::translate({S(1e5), 0, 0})), place(unit, Pose<S>::translate({S(1e5 + 2), 0, 0}))),
                 1.0, tol);
   const Pose<S> turn = rotated<S>({1, 2, 3}, S(0.9), {S(1e5), S(1e5), S(1e5)});
@@ -339,7 +335,7 @@ TEMPLATE_TEST_CASE("hard: a capsule against a box, by hand", "[gjk][hard][curved
   const Real tol = sizeof(S) == sizeof(float) ? Real(1e-5) : Real(1e-10);
   checkDistance(gjk(Capsule<S>({2, -1, 0}, {2, 1, 0}, S(0.25)), box), 1.25, tol);
   checkDistance(gjk(box, Capsule<S>({S(1.5), 0, 0}, {3, 1, S(0.5)}, S(0.25))), 0.75, tol);
-  checkTouching(gjk(box, Capsule<S>({S(0.75), -1, 0}, {S(0.75), 1, 0}, S(0.25))), 4 * std::sqrt(eps<S>()));
+  checkTouching(gjk(box, Capsule<S>({S(0.75), -1, 0}, {S(0.75), 1, 0}, S(0.25))), 4 * sqrtEpsilon<S>());
 }
 
 // --- zero-size shapes ---------------------------------------------------------------------
@@ -348,7 +344,7 @@ TEMPLATE_TEST_CASE("hard: zero-size shapes and degenerate segments", "[gjk][hard
   // A sphere of radius 0, a box of zero extents, a capsule of radius 0 about a = b and a
   // segment with a = b are all single points: V_Q - V_P has one vertex (or is a box).
   using S = TestType;
-  const Real tol = 64 * eps<S>();
+  const Real tol = 64 * machineEpsilon<S>();
   const Sphere<S> dot(0);
   checkDistance(gjk(place(dot, Pose<S>::identity()), place(dot, Pose<S>::translate({3, 4, 0}))), 5.0, tol);
   const GjkResult<S> same = gjk(place(dot, Pose<S>::translate({1, 1, 1})), place(dot, Pose<S>::translate({1, 1, 1})));

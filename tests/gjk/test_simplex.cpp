@@ -9,6 +9,7 @@
 #include "to_reference.hpp"
 
 #include <gjkx/gjk/simplex.hpp>
+#include <gjkx/motion/round_off.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -27,7 +28,7 @@ namespace {
 // A tolerance a few dozen round-offs wide, for answers that are exact in real arithmetic.
 template <typename S>
 S tight() {
-  return S(64) * std::numeric_limits<S>::epsilon();
+  return S(64) * machineEpsilon<S>();
 }
 
 // A simplex whose vertices are the given points w (p = 0, q = w, so witnessQ = z).
@@ -367,7 +368,7 @@ TEMPLATE_TEST_CASE("simplex: thin triangles keep lambda summing to 1", "[gjk][si
   using S = TestType;
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> u(-1, 1);
-  const Real tolerance = Real(1024) * Real(1e3) * std::numeric_limits<S>::epsilon();
+  const Real tolerance = Real(1024) * Real(1e3) * machineEpsilon<S>();
   for (int trial = 0; trial < 2000; ++trial) {
     const double scale = std::pow(10.0, 2 * u(rng));
     const Eigen::Vector3d a = Eigen::Vector3d(u(rng), u(rng), u(rng)) * scale;
@@ -438,7 +439,7 @@ TEMPLATE_TEST_CASE("simplex: random simplices match the brute-force closest poin
   // sqrt of that (see checkAgainstBruteForce). Sizes and counts are printed.
   using S = TestType;
   std::mt19937 rng(42);
-  const Real tolerance = Real(1024) * std::numeric_limits<S>::epsilon();
+  const Real tolerance = Real(1024) * machineEpsilon<S>();
   const Real pointTolerance = std::sqrt(tolerance);
   Real worst = 0;
   int sizes[5] = {0, 0, 0, 0, 0};

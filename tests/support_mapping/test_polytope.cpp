@@ -1,6 +1,7 @@
 // Tests of Polytope<S>: the Qhull hull (vertices, outward triangles, adjacency) and the
 // supporting vertex by hill climbing (§2.1), held to a linear scan of all vertices.
 #include <gjkx/support_mapping/polytope.hpp>
+#include <gjkx/motion/round_off.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -214,7 +215,7 @@ TEST_CASE("hill climbing far from the origin in float", "[polytope][climb][stiff
   }
   INFO(inexact << " of 10000 climbs below the top, worst by " << worst << " |s|");
   // The polytope has diameter 2: allow a few float epsilons of it.
-  CHECK(worst <= 10 * 2 * double(std::numeric_limits<float>::epsilon()));
+  CHECK(worst <= 10 * 2 * double(machineEpsilon<float>()));
 }
 
 // climbPath: starts at the hint (vertex 0 for an out-of-range hint), moves only along

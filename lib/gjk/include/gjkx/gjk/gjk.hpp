@@ -4,6 +4,7 @@
 
 #include <gjkx/gjk/simplex.hpp>
 #include <gjkx/gjk/trace.hpp>
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/support_mapping/support.hpp>
 
 #include <algorithm>
@@ -47,10 +48,10 @@ struct GjkSettings {
   /// Convergence: stop when the Minkowski distance (an upper bound of the closest
   /// distance) and the supporting distance along \f$\vec{s}_i\f$ (a lower bound, §2.3)
   /// agree within this fraction: \f$MD - SD \le \tau\,MD\f$. Default \f$\epsilon^{3/4}\f$.
-  S relativeTolerance = std::pow(std::numeric_limits<S>::epsilon(), S(0.75));
+  S relativeTolerance = defaultGjkRelativeTolerance<S>();
   /// Overlap: the origin counts as reached when \f$\lVert z\rVert \le \tau\max_k\lVert w_k\rVert\f$,
   /// i.e. within round-off of the simplex's own size. Default \f$16\epsilon\f$.
-  S overlapTolerance = S(16) * std::numeric_limits<S>::epsilon();
+  S overlapTolerance = defaultOverlapTolerance<S>();
   /// Boolean query (§2.3): stop at the first \f$\vec{s}_i\f$ with \f$SD(P,Q,\vec{s}_i)\f$ above this.
   /// Infinity (the default) computes the closest distance.
   S separationThreshold = std::numeric_limits<S>::infinity();
@@ -197,7 +198,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
   int ties = 0;
   auto isTie = [&](const Simplex<S>& x, const Vector3<S>& w, S mdNew) {
     if (ties >= kMaxTies || !contains(x, w)) return false;
-    return mdNew <= md + S(8) * std::numeric_limits<S>::epsilon() * std::sqrt(largestW2(x));
+    return mdNew <= md + gjkTieAllowance<S>() * std::sqrt(largestW2(x));
   };
 
   for (int i = 0; i < settings.maxIterations; ++i) {

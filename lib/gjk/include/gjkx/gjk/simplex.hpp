@@ -18,6 +18,7 @@
 /// Johnson's loses precision.
 #pragma once
 
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/motion/vector.hpp>
 
 #include <algorithm>
@@ -118,19 +119,16 @@ bool sameSign(S a, S b) {
   return (a > S(0) && b > S(0)) || (a < S(0) && b < S(0));
 }
 
-/// When may a sign be trusted? Each signed volume below is computed with a known
-/// round-off: about \f$\epsilon\f$ times the lengths it multiplies. A value within a few
-/// times that bound of zero has a sign that is noise: rounding can make a nearly
-/// collinear triangle or a nearly flat tetrahedron "contain" the origin by chance, and
-/// the interior answer is then a point of the simplex far from the closest one (needle
-/// tetrahedra 0.01 from the origin were reported as containing it). A feature whose sign
-/// is not trusted is searched as if it disagreed, and the interior answer, if any, is
-/// kept only when it is nearer: every candidate is a point of the simplex, so the
-/// nearest of them is never worse than any. This is the safety factor on the bound.
-template <typename S>
-constexpr S signSafety() {
-  return S(64) * std::numeric_limits<S>::epsilon();
-}
+// When may a sign be trusted? Each signed volume below is computed with a known
+// round-off: about epsilon times the lengths it multiplies. A value within a few
+// times that bound of zero has a sign that is noise: rounding can make a nearly
+// collinear triangle or a nearly flat tetrahedron "contain" the origin by chance, and
+// the interior answer is then a point of the simplex far from the closest one (needle
+// tetrahedra 0.01 from the origin were reported as containing it). A feature whose sign
+// is not trusted is searched as if it disagreed, and the interior answer, if any, is
+// kept only when it is nearer: every candidate is a point of the simplex, so the
+// nearest of them is never worse than any. The safety factor on the bound is
+// signSafety() (64 epsilon, round_off.hpp).
 
 /// The edge \f$w_b - w_a\f$, computed from the support points as \f$(q_b - q_a) - (p_b - p_a)\f$.
 /// Each \f$w = q - p\f$ is rounded by \f$\epsilon\lVert w\rVert\f$; when P is large and far

@@ -2,6 +2,7 @@
 /// @brief Rigid poses `worldFromBody`: where a body stands at one instant (§3).
 #pragma once
 
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/motion/vector.hpp>
 
 namespace gjkx {
@@ -53,8 +54,8 @@ struct Pose {
   void validate(const std::string& field) const {
     if (!rotation.allFinite()) failInput(field + ".rotation", "must be finite");
     requireFinite(translation, field + ".translation");
-    const Scalar tolerance = Scalar(1e3) * Eigen::NumTraits<Scalar>::epsilon();
-    if (!(rotation.transpose() * rotation).isIdentity(tolerance) || rotation.determinant() < Scalar(0))
+    const bool orthonormal = (rotation.transpose() * rotation).isIdentity(rotationTolerance<Scalar>());
+    if (!orthonormal || rotation.determinant() < Scalar(0))
       failInput(field + ".rotation", "must be orthonormal with determinant +1");
   }
 

@@ -3,19 +3,13 @@
 #pragma once
 
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/supporting_distance/supporting_distance.hpp>
 
 #include <cmath>
 #include <limits>
 
 namespace gjkx {
-
-/// The paper's collision tolerance, \f$\sqrt{\epsilon}\f$ of the scalar type (§2.3, §6:
-/// "\f$\epsilon^{1/2} \approx 0.0003\f$, where \f$\epsilon\f$ is the 4-byte floating point epsilon").
-template <typename S>
-S defaultCollisionTolerance() {
-  return std::sqrt(std::numeric_limits<S>::epsilon());
-}
 
 /// The answer of the static test.
 enum class IntersectionStatus {
