@@ -52,17 +52,35 @@ inline Real pointSegmentDistance(const Vec& x, const Vec& a, const Vec& b) {
 
 namespace detail {
 
-/// a b - c d to within 1.5 ulps (Kahan's algorithm with a fused multiply-add): the
-/// rounding error of c d is recovered exactly by the fma and added back.
-inline Real differenceOfProducts(Real a, Real b, Real c, Real d) {
-  const Real cd = c * d;
-  const Real error = std::fma(-c, d, cd);  // cd - c d, exactly
-  return std::fma(a, b, -cd) + error;
+/// The exact product a b as the sum hi + lo of two long doubles (Dekker's TwoProduct with
+/// Veltkamp's split into 32-bit halves; exact for the 64-bit mantissa of long double, short
+/// of overflow). Done without std::fma, which long double has only in software (300 ns).
+inline void twoProduct(Real a, Real b, Real& hi, Real& lo) {
+  constexpr Real split = Real(4294967297.0L);  // 2^32 + 1
+  hi = a * b;
+  const Real ca = split * a, cb = split * b;
+  const Real aHi = ca - (ca - a), aLo = a - aHi;
+  const Real bHi = cb - (cb - b), bLo = b - bHi;
+  lo = ((aHi * bHi - hi) + aHi * bLo + aLo * bHi) + aLo * bLo;
 }
 
-/// u x v with every component to within 1.5 ulps (differenceOfProducts), however nearly
-/// parallel u and v are: the exact cross product of the given vectors, rounded once.
+/// a b - c d within a few ulps of the result, however much the two products cancel: both
+/// are formed exactly (twoProduct), their leading parts subtracted (exactly, by Sterbenz's
+/// lemma, when they cancel) and the rounding errors added back.
+inline Real differenceOfProducts(Real a, Real b, Real c, Real d) {
+  Real ab, abError, cd, cdError;
+  twoProduct(a, b, ab, abError);
+  twoProduct(c, d, cd, cdError);
+  return (ab - cd) + (abError - cdError);
+}
+
+/// u x v with every component within a few ulps, however nearly parallel u and v are: the
+/// exact cross product of the given vectors, rounded. When u and v are at least 14 degrees
+/// apart (|u x v| >= |u| |v| / 4) the plain cross product is already that good (its
+/// relative error is about eps / sin(angle)) and is returned.
 inline Vec accurateCross(const Vec& u, const Vec& v) {
+  const Vec plain = u.cross(v);
+  if (16 * plain.squaredNorm() >= u.squaredNorm() * v.squaredNorm()) return plain;
   return Vec(differenceOfProducts(u.y(), v.z(), u.z(), v.y()), differenceOfProducts(u.z(), v.x(), u.x(), v.z()),
              differenceOfProducts(u.x(), v.y(), u.y(), v.x()));
 }
@@ -76,8 +94,8 @@ inline Vec accurateCross(const Vec& u, const Vec& v) {
 /// cross product of two long edges cancels: on a needle (two edges 2.7e5 long, one 1e-4)
 /// it came out 3e-10 off in direction (fuzz finding `reference_needle_face_normal`), on a
 /// flat sliver 47000 x 1e-7 (every angle near 0 or 180 degrees) 2.5e-8 off, enough to move
-/// the projection of a point 20000 along by 5e-4. Here each component is the exactly
-/// rounded cross product of the edges as computed (detail::accurateCross); the edges
+/// the projection of a point 20000 along by 5e-4. Here each component is the cross product
+/// of the edges as computed, right to a few ulps (detail::accurateCross); the edges
 /// carry a round-off of eps |edge|, which is the exact normal of the triangle with its
 /// vertices moved by that much, and a distance to a triangle moves by no more than its
 /// vertices do. The shortest edges (those at the largest angle) keep that move smallest.
@@ -87,6 +105,32 @@ inline Vec triangleNormal(const Vec& a, const Vec& b, const Vec& c) {
   if (ca >= ab) return detail::accurateCross(c - b, a - b);              // at b
   return detail::accurateCross(a - c, b - c);                            // at c
 }
+
+namespace detail {
+
+/// Where the projection of x onto the plane of triangle abc falls: the projection p and
+/// its three signed areas against the normal (u opposite a: edge bc, v opposite b: edge ca,
+/// w opposite c: edge ab), all >= 0 inside. `valid` is false for a degenerate triangle.
+struct PlaneProjection {
+  Vec p = Vec::Zero();
+  Real u = 0, v = 0, w = 0;
+  bool valid = false;
+};
+
+inline PlaneProjection projectOntoTriangle(const Vec& x, const Vec& a, const Vec& b, const Vec& c) {
+  PlaneProjection out;
+  const Vec n = triangleNormal(a, b, c);
+  const Real nn = n.squaredNorm();
+  if (!(nn > 0)) return out;
+  out.p = x - n * (n.dot(x - a) / nn);
+  out.u = n.dot((c - b).cross(out.p - b));
+  out.v = n.dot((a - c).cross(out.p - c));
+  out.w = n.dot((b - a).cross(out.p - a));
+  out.valid = true;
+  return out;
+}
+
+}  // namespace detail
 
 /// The projection of x onto the plane of triangle abc when it lies in the triangle (its
 /// closest point is then interior); std::nullopt when it lies outside (the closest point
@@ -100,26 +144,35 @@ inline Vec triangleNormal(const Vec& a, const Vec& b, const Vec& c) {
 /// `reference_sliver_triangle`). A point within round-off of an edge may be called
 /// outside; the edge's closest point is then the same within that round-off.
 inline std::optional<Vec> projectionInsideTriangle(const Vec& x, const Vec& a, const Vec& b, const Vec& c) {
-  const Vec n = triangleNormal(a, b, c);
-  const Real nn = n.squaredNorm();
-  if (!(nn > 0)) return std::nullopt;
-  const Vec p = x - n * (n.dot(x - a) / nn);
-  const Real u = n.dot((c - b).cross(p - b)), v = n.dot((a - c).cross(p - c)), w = n.dot((b - a).cross(p - a));
-  if (u >= 0 && v >= 0 && w >= 0) return p;
+  const detail::PlaneProjection q = detail::projectOntoTriangle(x, a, b, c);
+  if (q.valid && q.u >= 0 && q.v >= 0 && q.w >= 0) return q.p;
   return std::nullopt;
 }
 
 /// The closest point to x of the triangle abc (solid): the interior projection when it
-/// lies inside (projectionInsideTriangle), else the nearest of the three edges' closest
-/// points. Degenerate triangles (a segment or a point) are handled by their edges.
+/// lies inside (projectionInsideTriangle), else the nearest closest point of the edges
+/// whose signed area is negative (the edges whose lines separate the projection from the
+/// triangle: the closest point lies on one of them). Degenerate triangles (a segment or a
+/// point) are handled by all three edges.
 ///
 /// Accuracy: the distance is right within a few eps times the size of the coordinates,
-/// whatever the triangle's shape (see projectionInsideTriangle and closestOnSegment).
+/// whatever the triangle's shape (see projectionInsideTriangle and closestOnSegment); an
+/// area whose sign is wrong by round-off belongs to a projection within round-off of that
+/// edge's line, where the edges kept give the same point within that round-off.
 inline Vec closestOnTriangle(const Vec& x, const Vec& a, const Vec& b, const Vec& c) {
-  if (const auto p = projectionInsideTriangle(x, a, b, c)) return *p;
-  Vec best = closestOnSegment(x, a, b);
-  for (const Vec& q : {closestOnSegment(x, b, c), closestOnSegment(x, c, a)})
-    if ((q - x).squaredNorm() < (best - x).squaredNorm()) best = q;
+  const detail::PlaneProjection q = detail::projectOntoTriangle(x, a, b, c);
+  if (q.valid && q.u >= 0 && q.v >= 0 && q.w >= 0) return q.p;
+  Vec best = Vec::Zero();
+  Real bestDistance2 = std::numeric_limits<Real>::infinity();
+  auto tryEdge = [&](bool outside, const Vec& e0, const Vec& e1) {
+    if (q.valid && !outside) return;
+    const Vec y = closestOnSegment(x, e0, e1);
+    const Real d2 = (y - x).squaredNorm();
+    if (d2 < bestDistance2) best = y, bestDistance2 = d2;
+  };
+  tryEdge(q.w < 0, a, b);
+  tryEdge(q.u < 0, b, c);
+  tryEdge(q.v < 0, c, a);
   return best;
 }
 
