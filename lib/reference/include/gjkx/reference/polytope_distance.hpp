@@ -147,7 +147,8 @@ struct WorldPolytope {
   std::vector<std::pair<int, int>> edges;     ///< the triangles' edges, once each (i < j)
   std::vector<Vec> faceNormals;               ///< unit, outward, one per non-degenerate triangle
   std::vector<Real> faceOffsets;              ///< n . x <= offset inside
-  Vec lo = Vec::Zero(), hi = Vec::Zero();     ///< bounding box
+  Vec lo = Vec::Zero();                       ///< bounding box: the lowest corner
+  Vec hi = Vec::Zero();                       ///< and the highest
 
   /// The polytope of the given world vertices and boundary triangles; edges, outward
   /// normals (triangleNormal, oriented away from the centroid) and the box are derived.
