@@ -21,9 +21,10 @@
 /// it for a plain function.
 #pragma once
 
+#include <gjkx/motion/round_off.hpp>
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -106,7 +107,7 @@ class BrentStepper {
       fb_ = fc_;
       fc_ = fa_;
     }
-    const S tol1 = S(2) * std::numeric_limits<S>::epsilon() * std::abs(b_) + S(0.5) * tol_;
+    const S tol1 = S(2) * machineEpsilon<S>() * std::abs(b_) + S(0.5) * tol_;  // Brent's 2 eps |b| + tol / 2
     const S xm = S(0.5) * (c_ - b_);
     if (std::abs(xm) <= tol1 || fb_ == S(0)) {
       converged_ = true;

@@ -106,7 +106,7 @@ struct ToiSettings {
   S collisionTolerance = defaultCollisionTolerance<S>();
   /// Brent stops when the time of impact is bracketed within this fraction of the interval.
   /// Default \f$\sqrt{\epsilon}\f$.
-  S timeTolerance = std::sqrt(std::numeric_limits<S>::epsilon());
+  S timeTolerance = defaultTimeTolerance<S>();
   /// The paper's extrusion test or the certified one.
   ExtrusionVariant variant = ExtrusionVariant::Paper;
   /// The cap on Brent iterations over all restarts (the paper saw at most 43).
