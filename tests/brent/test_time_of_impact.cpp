@@ -63,19 +63,6 @@ const char* scalarName() {
 }
 
 template <typename Shape>
-Moving<Shape> fixedAt(const Shape& shape, const Vector3<typename Shape::Scalar>& position) {
-  using S = typename Shape::Scalar;
-  return moving(shape, Motion<S>::fixed(Pose<S>::translate(position)));
-}
-
-template <typename Shape>
-Moving<Shape> translating(const Shape& shape, const Vector3<typename Shape::Scalar>& start,
-                          const Vector3<typename Shape::Scalar>& velocity) {
-  using S = typename Shape::Scalar;
-  return moving(shape, Motion<S>::constantVelocity(Pose<S>::translate(start), velocity));
-}
-
-template <typename Shape>
 Moving<Shape> spinning(const Shape& shape, const Vector3<typename Shape::Scalar>& position,
                        const Vector3<typename Shape::Scalar>& angularVelocity) {
   using S = typename Shape::Scalar;

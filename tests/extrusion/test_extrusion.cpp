@@ -32,21 +32,6 @@ Box<S> unitBox() {
   return Box<S>(Vector3<S>(S(0.5), S(0.5), S(0.5)));
 }
 
-// A body fixed at `position`.
-template <typename Shape>
-Moving<Shape> fixedAt(const Shape& shape, const Vector3<typename Shape::Scalar>& position) {
-  using S = typename Shape::Scalar;
-  return moving(shape, Motion<S>::fixed(Pose<S>::translate(position)));
-}
-
-// A body at `start` at t = 0, moving at constant velocity.
-template <typename Shape>
-Moving<Shape> translating(const Shape& shape, const Vector3<typename Shape::Scalar>& start,
-                          const Vector3<typename Shape::Scalar>& velocity) {
-  using S = typename Shape::Scalar;
-  return moving(shape, Motion<S>::constantVelocity(Pose<S>::translate(start), velocity));
-}
-
 }  // namespace
 
 // Q passes above P along -x, one unit box over the other with a gap of 1/2 in y.

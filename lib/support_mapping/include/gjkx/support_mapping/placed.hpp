@@ -85,4 +85,20 @@ Moving<Shape> moving(const Shape& shape, const Motion<typename Shape::Scalar>& m
   return Moving<Shape>{shape, motion};
 }
 
+/// A shape at rest at `position`, not turned.
+template <typename Shape>
+Moving<Shape> fixedAt(const Shape& shape, const Vector3<typename Shape::Scalar>& position) {
+  using S = typename Shape::Scalar;
+  return moving(shape, Motion<S>::fixed(Pose<S>::translate(position)));
+}
+
+/// A shape at `start` at t = 0 moving at constant `velocity`, not turning: the linear
+/// motion of §3.
+template <typename Shape>
+Moving<Shape> translating(const Shape& shape, const Vector3<typename Shape::Scalar>& start,
+                          const Vector3<typename Shape::Scalar>& velocity) {
+  using S = typename Shape::Scalar;
+  return moving(shape, Motion<S>::constantVelocity(Pose<S>::translate(start), velocity));
+}
+
 }  // namespace gjkx
