@@ -254,6 +254,18 @@ void addOurs(std::vector<Method>& methods, const std::string& family, const std:
   methods.push_back(std::move(m));
 }
 
+/// Adds a peer's method: `call(context)` gives its peers::PeerOutcome, timed as ours are.
+template <typename Call>
+void addPeer(std::vector<Method>& methods, Method m, Call call) {
+  m.run = [call](const QueryContext& c, double budget, Outcome& out) {
+    return timeCalls(budget, out, [&] {
+      const peers::PeerOutcome r = call(c);
+      return Outcome{r.hit, r.time};
+    });
+  };
+  methods.push_back(std::move(m));
+}
+
 inline std::vector<Method> methods(bool quick) {
   std::vector<Method> out;
   for (int n : {2, 8, 32}) addOurs(out, "static", "N=" + std::to_string(n), false, StaticSampling{n});
@@ -268,50 +280,18 @@ inline std::vector<Method> methods(bool quick) {
   addOurs(out, "certified", tolText(1e-5), false, Ours{1e-5, ExtrusionVariant::Certified});
   addOurs(out, "certified", tolText(1e-5), true, Ours{1e-5, ExtrusionVariant::Certified});
 #if GJKX_HAVE_FCL
-  for (double tocErr : quick ? std::vector<double>{1e-2} : std::vector<double>{1e-2, 1e-3}) {
-    Method m{"FCL naive", tocErr > 5e-3 ? "toc_err=1e-2" : "toc_err=1e-3", "double", false, false, false, true, {}};
-    m.run = [tocErr](const QueryContext& c, double budget, Outcome& out) {
-      return timeCalls(budget, out, [&] {
-        const auto r = c.fcl->run(false, tocErr);
-        return Outcome{r.hit, r.time};
-      });
-    };
-    out.push_back(std::move(m));
-  }
-  for (const bool indep : {false, true}) {
-    Method m{indep ? "FCL CA indep" : "FCL CA", "-", "double", false, false, false, true, {}};
-    m.run = [indep](const QueryContext& c, double budget, Outcome& out) {
-      return timeCalls(budget, out, [&] {
-        const auto r = c.fcl->run(true, 1e-4, indep ? fcl::GST_INDEP : fcl::GST_LIBCCD);
-        return Outcome{r.hit, r.time};
-      });
-    };
-    out.push_back(std::move(m));
-  }
+  for (double tocErr : quick ? std::vector<double>{1e-2} : std::vector<double>{1e-2, 1e-3})
+    addPeer(out, {"FCL naive", tocErr > 5e-3 ? "toc_err=1e-2" : "toc_err=1e-3", "double", false, false, false, true, {}},
+            [tocErr](const QueryContext& c) { return c.fcl->run(false, tocErr); });
+  for (const bool indep : {false, true})
+    addPeer(out, {indep ? "FCL CA indep" : "FCL CA", "-", "double", false, false, false, true, {}},
+            [indep](const QueryContext& c) { return c.fcl->run(true, 1e-4, indep ? fcl::GST_INDEP : fcl::GST_LIBCCD); });
 #endif
 #if GJKX_HAVE_BULLET
-  {
-    Method m{"Bullet", "-", "float", false, false, false, true, {}};
-    m.run = [](const QueryContext& c, double budget, Outcome& out) {
-      return timeCalls(budget, out, [&] {
-        const auto r = c.bullet->run();
-        return Outcome{r.hit, r.time};
-      });
-    };
-    out.push_back(std::move(m));
-  }
+  addPeer(out, {"Bullet", "-", "float", false, false, false, true, {}}, [](const QueryContext& c) { return c.bullet->run(); });
 #endif
 #if GJKX_HAVE_BOX2D
-  {
-    Method m{"Box2D", "-", "float", false, false, true, false, {}};
-    m.run = [](const QueryContext& c, double budget, Outcome& out) {
-      return timeCalls(budget, out, [&] {
-        const auto r = c.box2d->run();
-        return Outcome{r.hit, r.time};
-      });
-    };
-    out.push_back(std::move(m));
-  }
+  addPeer(out, {"Box2D", "-", "float", false, false, true, false, {}}, [](const QueryContext& c) { return c.box2d->run(); });
 #endif
   (void)quick;
   return out;

@@ -601,63 +601,50 @@ ToiAnswer withMoving(const ToiQuery& q, F&& method) {
   return std::visit([&](const auto& a, const auto& b) { return method(moving(a, mp), moving(b, mq), L); }, P, Q);
 }
 
+/// A time-of-impact answer: whether and when the method reports a hit, its status name,
+/// and whether that status is its iteration cap or a numerical failure.
+inline ToiAnswer toiAnswer(bool hit, double time, const std::string& status, bool cap, bool numericalFailure) {
+  ToiAnswer out;
+  out.kind = cap ? AnswerKind::Cap : numericalFailure ? AnswerKind::NumericalFailure : AnswerKind::Answer;
+  out.hit = hit;
+  out.time = time;
+  setText(out.status, sizeof out.status, status);
+  return out;
+}
+
 /// The table's answer for static sampling: the first instant not proven disjoint, with
 /// the static test's status there.
 template <typename S>
 ToiAnswer answerOf(const StaticSamplingResult<S>& r) {
-  ToiAnswer out;
-  if (r.status == StaticSamplingStatus::NoCollision) return out;
-  setText(out.status, sizeof out.status, toString(r.intersection));
-  if (r.status == StaticSamplingStatus::IterationCap) out.kind = AnswerKind::Cap;
-  if (r.status == StaticSamplingStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
-  out.hit = true;
-  out.time = double(r.time);
-  return out;
+  if (r.status == StaticSamplingStatus::NoCollision) return ToiAnswer{};
+  return toiAnswer(true, double(r.time), toString(r.intersection), r.status == StaticSamplingStatus::IterationCap,
+                   r.status == StaticSamplingStatus::NumericalFailure);
 }
 
 /// The table's answer for the swept test: yes/no, with its status.
 template <typename S>
 ToiAnswer answerOf(const IntersectionResult<S>& r) {
-  ToiAnswer out;
-  setText(out.status, sizeof out.status, toString(r.status));
-  if (r.status == IntersectionStatus::IterationCap) out.kind = AnswerKind::Cap;
-  if (r.status == IntersectionStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
-  out.hit = r.status != IntersectionStatus::Disjoint;
-  out.time = 0;
-  return out;
+  return toiAnswer(r.status != IntersectionStatus::Disjoint, 0, toString(r.status), r.status == IntersectionStatus::IterationCap,
+                   r.status == IntersectionStatus::NumericalFailure);
 }
 
 /// The table's answer for conservative advancement, keeping its cap and numerical failure.
 template <typename S>
 ToiAnswer answerOf(const ConservativeAdvancementResult<S>& r) {
-  ToiAnswer out;
   switch (r.status) {
-    case ConservativeAdvancementStatus::NoCollision: return out;
-    case ConservativeAdvancementStatus::NumericalFailure:
-      out.kind = AnswerKind::NumericalFailure;
-      setText(out.status, sizeof out.status, "gjk numerical-failure");
-      return out;
-    case ConservativeAdvancementStatus::IterationCap:
-      out.kind = AnswerKind::Cap;
-      setText(out.status, sizeof out.status, std::to_string(r.steps) + " steps");
-      break;
+    case ConservativeAdvancementStatus::NoCollision: return ToiAnswer{};
+    case ConservativeAdvancementStatus::NumericalFailure: return toiAnswer(false, 1, "gjk numerical-failure", false, true);
+    case ConservativeAdvancementStatus::IterationCap: return toiAnswer(true, double(r.time), std::to_string(r.steps) + " steps", true, false);
     case ConservativeAdvancementStatus::Hit: break;
   }
-  out.hit = true;
-  out.time = double(r.time);
-  return out;
+  return toiAnswer(true, double(r.time), "", false, false);
 }
 
 /// The table's answer for the paper's solver (gjkx::timeOfImpact), keeping its status.
 template <typename S>
 ToiAnswer answerOf(const ToiResult<S>& r) {
-  ToiAnswer out;
-  setText(out.status, sizeof out.status, toString(r.status));
-  if (r.status == ToiStatus::IterationCap) out.kind = AnswerKind::Cap;
-  if (r.status == ToiStatus::NumericalFailure) out.kind = AnswerKind::NumericalFailure;
-  out.hit = reportsCollision(r.status);
-  out.time = double(r.time);
-  return out;
+  return toiAnswer(reportsCollision(r.status), double(r.time), toString(r.status), r.status == ToiStatus::IterationCap,
+                   r.status == ToiStatus::NumericalFailure);
 }
 
 /// GJK's distance (gjkx::gjk, default settings) at the case's poses, in scalar S.

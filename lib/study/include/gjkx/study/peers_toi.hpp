@@ -40,9 +40,7 @@
 #include <fcl/narrowphase/continuous_collision.h>
 #endif
 #if GJKX_HAVE_BULLET
-#include <BulletCollision/NarrowPhaseCollision/btContinuousConvexCollision.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
-#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btContinuousConvexCollision.h>  // the solvers: peers.hpp
 #endif
 #if GJKX_HAVE_BOX2D
 #include <box2d/b2_time_of_impact.h>

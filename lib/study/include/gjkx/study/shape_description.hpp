@@ -7,6 +7,7 @@
 /// Holds (namespace gjkx::study): `ShapeKind`, `ShapeDescription` (kind, parameters, the
 /// hull's vertices), its builders (`boxDescription`, `sphereDescription`,
 /// `capsuleDescription`, `diskDescription`, `polytopeDescription`, `polygonDescription`,
+/// `hullDescription`,
 /// `randomShape`), our shape for a description (`ourShape`, `withOurShape`) and the
 /// support point by a linear scan (`scanSupport`, what the study hands to libccd).
 /// Every shape is centred on its body origin; a capsule's axis is the body's z axis.
@@ -115,21 +116,24 @@ inline std::shared_ptr<const Polytope<float>> floatHull(const Polytope<double>& 
   return std::make_shared<const Polytope<float>>(planar ? Polytope<float>::polygon(points) : Polytope<float>::hull(points));
 }
 
-/// The convex polytope spanned by `points` (their hull; float copy built too).
-inline ShapeDescription polytopeDescription(const std::vector<Vector3<double>>& points) {
+/// The convex polytope (kind Polytope) or polygon in z = 0 (kind Polygon) spanned by
+/// `points`: their hull, in double and in float.
+inline ShapeDescription hullDescription(ShapeKind kind, const std::vector<Vector3<double>>& points) {
+  if (kind != ShapeKind::Polytope && kind != ShapeKind::Polygon) failInput("hullDescription.kind", "must be Polytope or Polygon");
+  const bool planar = kind == ShapeKind::Polygon;
   ShapeDescription s;
-  s.kind = ShapeKind::Polytope;
-  s.hull = std::make_shared<const Polytope<double>>(Polytope<double>::hull(points));
-  s.hullF = floatHull(*s.hull, false);
+  s.kind = kind;
+  s.hull = std::make_shared<const Polytope<double>>(planar ? Polytope<double>::polygon(points) : Polytope<double>::hull(points));
+  s.hullF = floatHull(*s.hull, planar);
   return s;
 }
-/// The convex polygon spanned by `points` in the plane z = 0 (float copy built too).
+/// The convex polytope spanned by `points`.
+inline ShapeDescription polytopeDescription(const std::vector<Vector3<double>>& points) {
+  return hullDescription(ShapeKind::Polytope, points);
+}
+/// The convex polygon spanned by `points` in the plane z = 0.
 inline ShapeDescription polygonDescription(const std::vector<Vector3<double>>& points) {
-  ShapeDescription s;
-  s.kind = ShapeKind::Polygon;
-  s.hull = std::make_shared<const Polytope<double>>(Polytope<double>::polygon(points));
-  s.hullF = floatHull(*s.hull, true);
-  return s;
+  return hullDescription(ShapeKind::Polygon, points);
 }
 
 /// A random unit vector (a normalised Gaussian vector).
