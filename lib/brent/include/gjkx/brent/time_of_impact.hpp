@@ -113,6 +113,9 @@ struct ToiSettings {
   int maxIterations = 100;
   /// Settings of every GJK run.
   GjkSettings<S> gjk;
+  /// Run the query in the frame of P (see `timeOfImpact`); false runs it in world
+  /// coordinates, for comparison only (the study's extreme cases show what that costs).
+  bool inFrameOfP = true;
 };
 
 /// One Brent iterate of the solver, as chapter 05 draws it.
@@ -583,7 +586,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
   if constexpr (detail::CanTranslate<MovingP>::value && detail::CanTranslate<MovingQ>::value) {
     const Vector3<S> origin = detail::queryOrigin(P, t0);
-    if (origin.allFinite() && origin.squaredNorm() > S(0)) {
+    if (settings.inFrameOfP && origin.squaredNorm() > S(0)) {
       const MovingP localP = P.translated(-origin);
       const MovingQ localQ = Q.translated(-origin);
       return detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0, t1, settings, trace, origin).solve();
