@@ -508,3 +508,22 @@ TEMPLATE_TEST_CASE("simplex: the sub-algorithm's units, a power of two read from
     CHECK(detail::unitsFor(x) == std::ldexp(S(1), 1 - e));
   }
 }
+
+// A fuzz finding (finding-gjk_tiny_triangle_far): a triangle 5e-5 across at x = -748138.4375,
+// a sliver, in float. Its normal is about 1e-22 in the sub-algorithm's units, and its
+// square fell into float's subnormals: the projection of the origin onto the plane came
+// out at 0.69 of its distance. Every point of the triangle is at least 748138.4375 from
+// the origin, so |z| must be too (up to float's rounding there).
+TEMPLATE_TEST_CASE("simplex: a tiny triangle far from the origin keeps its distance", "[gjk][simplex][scale]", float,
+                   double) {
+  using S = TestType;
+  const S x = S(-748138.4375);
+  const std::vector<Vector3<S>> points{Vector3<S>(x, S(2.6276335e-05), S(6.3955784e-05)),
+                                       Vector3<S>(x, S(-2.6304275e-05), S(-6.3955784e-05)),
+                                       Vector3<S>(x, S(-2.6155263e-05), S(-6.3756015e-05))};
+  const Simplex<S> simplex = reduced(points);
+  checkWellFormed(points, simplex);
+  INFO((sizeof(S) == sizeof(float) ? "float" : "double") << ": |z| = " << simplex.z.norm());
+  CHECK(double(simplex.z.norm()) >= 748138.4375 * (1 - 4 * double(machineEpsilon<S>())));
+  CHECK(double(simplex.z.norm()) <= 748138.4375 * (1 + 4 * double(machineEpsilon<S>())) + 1e-3);
+}
