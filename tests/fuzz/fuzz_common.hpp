@@ -34,6 +34,7 @@
 #include <gjkx/brent/time_of_impact.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/motion/round_off.hpp>
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -64,7 +65,7 @@ using reference::signedDistance;
 inline Real slackFactor() {
   static const Real factor = [] {
     const char* text = std::getenv("GJKX_FUZZ_SLACK");
-    return text ? Real(std::atof(text)) : Real(1000);
+    return text ? Real(std::atof(text)) : Real(checkSlackRoundOffs);
   }();
   return factor;
 }
@@ -78,7 +79,7 @@ inline Real slackFactor() {
 /// "no longer decreases" in round-off, with the gap still open: a capsule-capsule distance
 /// 2.5e-9 off (relative, double; 1400 times the tolerance) was seen. For those the checks
 /// allow sqrt(eps) relative.
-constexpr Real kRelativeAllowance = 16;
+constexpr Real kRelativeAllowance = checkRelativeAllowance;
 
 /// False when GJKX_FUZZ_ACCURACY=0: the distance-accuracy checks (a GJK distance against
 /// the reference) are then skipped and only crashes, sanitizer reports, NaN, hangs and
@@ -374,7 +375,7 @@ Cloud cloudAt(const Body<S>& body, S t) {
 /// The round-off scale of a pair of clouds in precision S.
 template <typename S>
 Real slackFor(Real extent) {
-  return slackFactor() * Real(std::numeric_limits<S>::epsilon()) * extent + Real(std::numeric_limits<S>::min()) * 1e6L;
+  return slackFactor() * Real(machineEpsilon<S>()) * extent + Real(std::numeric_limits<S>::min()) * 1e6L;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -397,14 +398,14 @@ Real closestPointResolution(const Simplex<S>& x) {
     const Real width = longest > 0 ? a.cross(b).norm() / longest : Real(0);
     condition = width > 0 ? longest / width : std::numeric_limits<Real>::infinity();
   }
-  return 16 * Real(std::numeric_limits<S>::epsilon()) * wMax * condition;
+  return Real(closestPointRoundOff<S>()) * wMax * condition;
 }
 
 /// How far a GJK distance may be from the reference distance `ref` (see kRelativeAllowance).
 template <typename S>
 Real distanceAllowance(Real ref, Real extent, bool rounded, S relativeTolerance) {
   const Real distance = std::max(Real(0), ref);
-  if (rounded) return slackFor<S>(extent) + std::sqrt(Real(std::numeric_limits<S>::epsilon())) * distance;
+  if (rounded) return slackFor<S>(extent) + Real(roundedShapeAllowance<S>()) * distance;
   return slackFor<S>(extent) + kRelativeAllowance * Real(relativeTolerance) * distance;
 }
 

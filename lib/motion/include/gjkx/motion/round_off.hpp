@@ -128,4 +128,33 @@ constexpr S rotationTolerance() {
   return S(1000) * machineEpsilon<S>();
 }
 
+// The allowances of the checks (tests/fuzz): how far a result may be from the exact
+// long-double reference (lib/reference) before a check blames the library.
+
+/// Round-offs of the bodies' extent a checked result may be off by, 1000: a GJK run on
+/// coordinates of size R rounds each support point by \f$\epsilon R\f$, and a few hundred
+/// rounded operations lie between the input and a distance or a time.
+constexpr int checkSlackRoundOffs = 1000;
+
+/// Multiples of GJK's relative tolerance a checked distance on polytopes may be off by, 16:
+/// GJK stops when its upper and lower bounds are within the relative tolerance of each
+/// other, and the bound it returns is itself rounded.
+constexpr int checkRelativeAllowance = 16;
+
+/// How far the closest point z of GJK's final simplex may be from the true one, per unit
+/// of the simplex's largest \f$\lVert w_k\rVert\f$ and of its thinness (16ε: the same
+/// round-off that `defaultOverlapTolerance` allows z near the origin).
+template <typename S>
+constexpr S closestPointRoundOff() {
+  return defaultOverlapTolerance<S>();
+}
+
+/// The relative allowance of a checked distance between rounded shapes, \f$\sqrt{\epsilon}\f$:
+/// GJK converges slowly on curved surfaces and stops when the distance no longer decreases
+/// in round-off, with the gap between its bounds still open.
+template <typename S>
+constexpr S roundedShapeAllowance() {
+  return sqrtEpsilon<S>();
+}
+
 }  // namespace gjkx
