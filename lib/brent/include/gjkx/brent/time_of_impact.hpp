@@ -585,8 +585,8 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
   if constexpr (detail::CanTranslate<MovingP>::value && detail::CanTranslate<MovingQ>::value) {
-    const Vector3<S> origin = detail::queryOrigin(P, t0);
-    if (settings.inFrameOfP && origin.squaredNorm() > S(0)) {
+    const Vector3<S> origin = settings.inFrameOfP ? detail::queryOrigin(P, t0) : Vector3<S>::Zero();
+    if (origin.squaredNorm() > S(0)) {  // already there: nothing to translate
       const MovingP localP = P.translated(-origin);
       const MovingQ localQ = Q.translated(-origin);
       return detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0, t1, settings, trace, origin).solve();
