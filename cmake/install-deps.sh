@@ -17,6 +17,11 @@ packages=(
   clang libclang-rt-14-dev # the sanitizer build and the libFuzzer targets (tests/fuzz)
   # the comparative study (chapter 09): the peers and the benchmark harness
   libccd-dev libfcl-dev libbullet-dev libbox2d-dev libbenchmark-dev
+  # nonconvex bodies (mesh, kdop): meshes in through Assimp, HACD's convex decomposition
+  # (Bullet's extras); assimp-testmodels gives real meshes nobody here wrote (BSD-3-clause)
+  libassimp-dev assimp-testmodels libbullet-extras-dev
+  # the simulation (dynamics, timewarp): Boost.Odeint's Dormand-Prince, JSON scene files
+  libboost-dev nlohmann-json3-dev
 )
 
 missing=()
