@@ -180,3 +180,75 @@ TEST_CASE("motion rejects bad input", "[motion][input]") {
   REQUIRE_NOTHROW(gjkx::requireInterval(0.0, 0.0, "sweep"));
   REQUIRE_THROWS_WITH(gjkx::requireInterval(2.0, 1.0, "sweep"), Contains("sweep.t1"));
 }
+
+// Free flight over [1, 3]: ballistic translation p0 + v tau + a tau^2 / 2 at any t, and a
+// rotation from a quarter turn about z to a three-quarter turn about z: halfway it has
+// turned a quarter turn more (constant rate), the ends are the two rotations exactly, and
+// outside [t0, t1] the rotation is held while the translation stays ballistic.
+TEMPLATE_TEST_CASE("motion free flight", "[motion]", float, double) {
+  using S = TestType;
+  const Pose<S> start = Pose<S>::fromAxisAngle(Vec<S>(0, 0, 1), S(kPi / 4), Vec<S>(1, 2, 3));
+  const gjkx::Matrix3<S> end = Eigen::AngleAxis<S>(S(3 * kPi / 4), Vec<S>(0, 0, 1)).toRotationMatrix();
+  const Vec<S> v(1, 0, 2), a(0, 0, -10);
+  const Motion<S> m = Motion<S>::freeFlight(start, v, a, end, S(1), S(3));
+  CHECK_FALSE(m.isStatic());
+
+  CHECK(m.pose(S(1)).rotation == start.rotation);
+  CHECK(m.pose(S(3)).rotation == end);
+  for (S t : {S(0), S(1), S(1.5), S(3), S(4)}) {
+    const S tau = t - S(1);
+    CHECK(near<S>(m.pose(t).translation, Vec<S>(start.translation + v * tau + a * (tau * tau / 2))));
+  }
+  CHECK(std::abs(angleBetween<S>(start.rotation, m.pose(S(2)).rotation) - S(kPi / 4)) <= tol<S>() * 10);
+  CHECK(std::abs(angleBetween<S>(start.rotation, m.pose(S(1.5)).rotation) - S(kPi / 8)) <= tol<S>() * 10);
+  CHECK(near<S>(m.pose(S(2)).rotation * Vec<S>(1, 0, 0), Vec<S>(0, 1, 0)));  // 45 + 45 degrees about z
+  CHECK(m.pose(S(0)).rotation == start.rotation);
+  CHECK(m.pose(S(10)).rotation == end);
+
+  // The bound is the path's own: |a|, the angle over the interval, no angular acceleration.
+  const gjkx::MotionBound<S> b = m.bound();
+  CHECK(std::abs(b.linearAcceleration - S(10)) <= tol<S>() * 10);
+  CHECK(std::abs(b.angularSpeed - S(kPi / 4)) <= tol<S>() * 10);
+  CHECK(b.angularAcceleration == S(0));
+
+  // Seen from a frame moved by an offset, only the translation changes.
+  const Motion<S> moved = m.translated(Vec<S>(10, 0, 0));
+  CHECK(near<S>(moved.pose(S(2)).translation, Vec<S>(m.pose(S(2)).translation + Vec<S>(10, 0, 0))));
+  CHECK(moved.pose(S(2)).rotation == m.pose(S(2)).rotation);
+}
+
+// The free flight's bound really bounds it: the angle turned between nearby samples never
+// exceeds angularSpeed * dt, and the translation's second difference is |a|.
+TEST_CASE("motion free flight turns at the rate its bound states", "[motion]") {
+  const Pose<double> start = Pose<double>::fromAxisAngle(Vec<double>(1, 2, 3), 0.4, Vec<double>::Zero());
+  const gjkx::Matrix3<double> end =
+      Eigen::AngleAxis<double>(1.1, Vec<double>(-1, 0.5, 2).normalized()).toRotationMatrix() * start.rotation;
+  const Motion<double> m = Motion<double>::freeFlight(start, Vec<double>(3, 0, 0), Vec<double>(0, -9.81, 0), end, 0.0, 0.5);
+  const double w = m.bound().angularSpeed;
+  CHECK(std::abs(w - 1.1 / 0.5) < 1e-12);
+  const double dt = 0.5 / 100;
+  for (int i = 0; i < 100; ++i) {
+    const double turned = angleBetween<double>(m.pose(i * dt).rotation, m.pose((i + 1) * dt).rotation);
+    CHECK(std::abs(turned - w * dt) < 1e-9);
+  }
+}
+
+TEST_CASE("motion free flight rejects bad input", "[motion][input]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Pose<double> id = Pose<double>::identity();
+  const gjkx::Matrix3<double> I = gjkx::Matrix3<double>::Identity();
+  const Vec<double> z = Vec<double>::Zero();
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, Vec<double>(nan, 0, 0), z, I, 0.0, 1.0), Contains("motion.velocity"));
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, z, Vec<double>(0, nan, 0), I, 0.0, 1.0),
+                      Contains("motion.acceleration"));
+  gjkx::Matrix3<double> skew = I;
+  skew(0, 1) = 0.3;
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, z, z, skew, 0.0, 1.0), Contains("motion.endRotation"));
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, z, z, gjkx::Matrix3<double>(-I), 0.0, 1.0),
+                      Contains("motion.endRotation"));
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, z, z, I, 1.0, 1.0), Contains("motion.t1"));
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(id, z, z, I, 1.0, 0.0), Contains("motion.t1"));
+  Pose<double> bad = id;
+  bad.translation.y() = nan;
+  REQUIRE_THROWS_WITH(Motion<double>::freeFlight(bad, z, z, I, 0.0, 1.0), Contains("motion.start.translation"));
+}

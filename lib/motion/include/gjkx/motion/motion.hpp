@@ -142,6 +142,53 @@ struct PoseInterpolation {
   }
 };
 
+/// Free flight of a rigid body over [t0, t1], as the dynamics stage hands it to the
+/// time-of-impact solver (§5–§6): ballistic translation
+/// \f$p(t) = p_0 + v\,\tau + \tfrac12 a\,\tau^2\f$, \f$\tau = t - t_0\f$, and a rotation that turns
+/// at a constant rate along the shortest arc (quaternion slerp) from `start.rotation` at t0
+/// to `endRotation` at t1, held at the nearest end outside [t0, t1]. The dynamics stage
+/// integrates the torque-free rotation accurately and puts the orientation it reached at t1
+/// into `endRotation`, so the path ends exactly where the integrated body does. The turn
+/// from start to end must be less than a half turn for the shortest arc to be the body's.
+template <typename Scalar>
+struct FreeFlightPath {
+  /// The pose at t0.
+  Pose<Scalar> start;
+  /// Velocity of the body origin at t0.
+  Vector3<Scalar> velocity = Vector3<Scalar>::Zero();
+  /// Constant acceleration of the body origin (gravity).
+  Vector3<Scalar> acceleration = Vector3<Scalar>::Zero();
+  /// The rotation reached at t1.
+  Matrix3<Scalar> endRotation = Matrix3<Scalar>::Identity();
+  /// Start of the interval.
+  Scalar t0 = Scalar(0);
+  /// End of the interval (t1 > t0).
+  Scalar t1 = Scalar(1);
+  /// The pose at time t.
+  Pose<Scalar> pose(Scalar t) const {
+    const Scalar tau = t - t0;
+    Scalar u = tau / (t1 - t0);
+    u = u < Scalar(0) ? Scalar(0) : (u > Scalar(1) ? Scalar(1) : u);
+    Pose<Scalar> p;
+    if (u == Scalar(0)) {
+      p.rotation = start.rotation;
+    } else if (u == Scalar(1)) {
+      p.rotation = endRotation;
+    } else {
+      const Eigen::Quaternion<Scalar> q0(start.rotation), q1(endRotation);
+      p.rotation = q0.slerp(u, q1).toRotationMatrix();
+    }
+    p.translation = start.translation + velocity * tau + acceleration * (Scalar(0.5) * tau * tau);
+    return p;
+  }
+  /// The path exactly: linear acceleration |a|, angular speed the angle turned over t1 - t0,
+  /// no angular acceleration (the slerp turns about a fixed axis at a constant rate).
+  MotionBound<Scalar> bound() const {
+    const Eigen::Quaternion<Scalar> q0(start.rotation), q1(endRotation);
+    return {acceleration.norm(), q0.angularDistance(q1) / (t1 - t0), Scalar(0)};
+  }
+};
+
 /// Any of the rigid motions above, behind one `pose(t)`.
 ///
 /// Build one through the named constructors, which validate their input and throw
@@ -151,7 +198,7 @@ class Motion {
  public:
   /// The alternatives.
   using Variant = std::variant<StaticMotion<Scalar>, ConstantVelocity<Scalar>, ConstantAcceleration<Scalar>,
-                               ScrewMotion<Scalar>, PoseInterpolation<Scalar>>;
+                               ScrewMotion<Scalar>, PoseInterpolation<Scalar>, FreeFlightPath<Scalar>>;
 
   /// A body at rest at the identity pose.
   Motion() : motion_(StaticMotion<Scalar>{}) {}
@@ -193,6 +240,23 @@ class Motion {
     requireInterval(t0, t1, "motion");
     if (t1 == t0) failInput("motion.t1", "must be after t0 for an interpolation");
     return Motion(PoseInterpolation<Scalar>{from, to, t0, t1});
+  }
+
+  /// Free flight (ballistic translation, rotation turning at a constant rate from
+  /// `start.rotation` to `endRotation`) over [t0, t1], t1 > t0.
+  static Motion freeFlight(const Pose<Scalar>& start, const Vector3<Scalar>& velocity,
+                           const Vector3<Scalar>& acceleration, const Matrix3<Scalar>& endRotation, Scalar t0,
+                           Scalar t1) {
+    start.validate("motion.start");
+    requireFinite(velocity, "motion.velocity");
+    requireFinite(acceleration, "motion.acceleration");
+    if (!endRotation.allFinite()) failInput("motion.endRotation", "must be finite");
+    if (!(endRotation.transpose() * endRotation).isIdentity(rotationTolerance<Scalar>()) ||
+        endRotation.determinant() < Scalar(0))
+      failInput("motion.endRotation", "must be orthonormal with determinant +1");
+    requireInterval(t0, t1, "motion");
+    if (t1 == t0) failInput("motion.t1", "must be after t0 for a free flight");
+    return Motion(FreeFlightPath<Scalar>{start, velocity, acceleration, endRotation, t0, t1});
   }
 
   /// The pose `worldFromBody` at time t.
