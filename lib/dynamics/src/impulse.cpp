@@ -1,0 +1,314 @@
+// Mirtich's impulse integration through compression and restitution (see the header).
+#include <gjkx/dynamics/impulse.hpp>
+
+#include <boost/numeric/odeint.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace gjkx {
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+
+Eigen::Matrix3d cross(const Eigen::Vector3d& r) {
+  Eigen::Matrix3d m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
+// K_X = m^-1 1 - [r] J^-1 [r]: the change of the contact point's velocity per unit impulse.
+// Derivation: an impulse p at r changes v by p/m and omega by J^-1 (r x p); the point's
+// velocity v + omega x r changes by p/m + (J^-1 [r] p) x r = (m^-1 1 - [r] J^-1 [r]) p.
+Eigen::Matrix3d collisionMatrix(const RigidBody& body, const BodyState& state, const Eigen::Vector3d& point) {
+  if (body.isStatic()) return Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d rx = cross(point - state.worldFromBody.translation);
+  return body.inverseMass() * Eigen::Matrix3d::Identity() -
+         rx * body.inverseInertiaWorld(state.worldFromBody.rotation) * rx;
+}
+
+// The integrated quantities, dimensionless. With U = |u0| and P = U / K_nn (the normal
+// impulse that would stop the normal approach of a frictionless contact), the impulse is
+// p = P (px, py, sigma) in the contact frame (t1, t2, n), sigma the independent variable
+// (Mirtich's p_z), and the normal work is W = P U w. Then u / U = u0 / U + Khat p / P with
+// Khat = K / K_nn, all of order one, and one absolute tolerance fits every component.
+//   y[0], y[1] = px, py    (tangential impulse)
+//   y[2]       = w         (normal work, dw/dsigma = u_n / U)
+using State = std::array<double, 3>;
+
+enum class Friction { None, Sliding, Sticking };
+
+struct Collision {
+  Eigen::Matrix3d K;  // Khat in the contact frame: columns t1, t2, n
+  Eigen::Vector3d u0;  // u0 / U in the contact frame
+  double mu = 0;
+  Friction friction = Friction::None;
+  Eigen::Vector2d stick = Eigen::Vector2d::Zero();  // d_t while sticking
+  Eigen::Vector2d ray = Eigen::Vector2d::Zero();    // the sliding direction while |u_t| is ~0
+  double zero = 0;                                  // tangential speed counted as zero
+
+  Eigen::Vector3d velocity(const State& y, double sigma) const { return u0 + K * Eigen::Vector3d(y[0], y[1], sigma); }
+
+  // d(px, py, w)/dsigma in the current friction mode.
+  void operator()(const State& y, State& dy, double sigma) const {
+    const Eigen::Vector3d u = velocity(y, sigma);
+    Eigen::Vector2d dt = Eigen::Vector2d::Zero();
+    if (friction == Friction::Sliding) {
+      // Coulomb: the friction impulse opposes the sliding velocity, mu per unit normal impulse.
+      const Eigen::Vector2d ut = u.head<2>();
+      const double speed = ut.norm();
+      const Eigen::Vector2d dir = speed > zero ? Eigen::Vector2d(ut / speed) : ray;
+      dt = -mu * dir;
+    } else if (friction == Friction::Sticking) {
+      dt = stick;
+    }
+    dy[0] = dt.x();
+    dy[1] = dt.y();
+    dy[2] = u.z();
+  }
+
+  // Sticking: the impulse direction d = (d_t, 1) with (Khat d)_t = 0, i.e. A d_t = -b with
+  // A the tangential block of Khat and b its tangential-normal column.
+  Eigen::Vector2d stickingDirection() const {
+    const Eigen::Matrix2d A = K.topLeftCorner<2, 2>();
+    const Eigen::Vector2d b = K.topRightCorner<2, 1>();
+    return -A.ldlt().solve(b);
+  }
+
+  // Where sliding resumes from u_t = 0 when sticking is not possible: the unit direction
+  // uhat whose friction keeps u_t growing along uhat itself,
+  //   (Khat (n - mu uhat))_t = b - mu A uhat = lambda uhat,  lambda > 0.
+  // The angle is found by scanning for a sign change of the cross product (b - mu A uhat)
+  // x uhat, refined by bisection; of several rays, the one that grows fastest (largest
+  // lambda). Without one (not seen in practice), the friction impulse points along the
+  // sticking direction clipped to the cone.
+  Eigen::Vector2d slidingRay() const {
+    const Eigen::Matrix2d A = K.topLeftCorner<2, 2>();
+    const Eigen::Vector2d b = K.topRightCorner<2, 1>();
+    auto g = [&](double theta) {
+      const Eigen::Vector2d uh(std::cos(theta), std::sin(theta));
+      const Eigen::Vector2d f = b - mu * A * uh;
+      return std::make_pair(f.x() * uh.y() - f.y() * uh.x(), f.dot(uh));
+    };
+    constexpr int kSamples = 720;
+    constexpr double kTwoPi = 6.283185307179586;
+    double bestLambda = 0;
+    Eigen::Vector2d best = Eigen::Vector2d::Zero();
+    for (int i = 0; i < kSamples; ++i) {
+      double lo = kTwoPi * i / kSamples, hi = kTwoPi * (i + 1) / kSamples;
+      double glo = g(lo).first;
+      if ((glo > 0) == (g(hi).first > 0)) continue;
+      for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if ((g(mid).first > 0) == (glo > 0)) {
+          lo = mid;
+        } else {
+          hi = mid;
+        }
+      }
+      const double theta = 0.5 * (lo + hi);
+      const double lambda = g(theta).second;
+      if (lambda > bestLambda) {
+        bestLambda = lambda;
+        best = Eigen::Vector2d(std::cos(theta), std::sin(theta));
+      }
+    }
+    if (bestLambda > 0) return best;
+    const Eigen::Vector2d d = stickingDirection();
+    return d.norm() > 0 ? Eigen::Vector2d(-d.normalized()) : Eigen::Vector2d(1, 0);
+  }
+
+  // At u_t = 0: stick if the sticking impulse lies in the friction cone, else slide on along the ray.
+  void tangentialStop() {
+    const Eigen::Vector2d d = stickingDirection();
+    if (d.norm() <= mu) {
+      friction = Friction::Sticking;
+      stick = d;
+    } else {
+      friction = Friction::Sliding;
+      ray = slidingRay();
+    }
+  }
+};
+
+enum class Phase { Compression, Restitution, Done };
+
+void requireSetting(bool ok, const char* field, const char* what) {
+  if (!ok) failInput(field, what);
+}
+
+}  // namespace
+
+ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b,
+                               const Contact& contact, const CollisionMaterial& material,
+                               const ImpulseSettings& settings) {
+  a.validate("a");
+  b.validate("b");
+  requireFinite(contact.point, "contact.point");
+  requireFinite(contact.normal, "contact.normal");
+  if (std::abs(contact.normal.norm() - 1) > 1e-6) failInput("contact.normal", "must be a unit vector");
+  requireSetting(material.restitution >= 0 && material.restitution <= 1, "material.restitution", "must lie in [0, 1]");
+  requireSetting(material.friction >= 0 && std::isfinite(material.friction), "material.friction",
+                 "must be finite and not negative");
+  requireSetting(settings.microcollisionSpeed >= 0 && std::isfinite(settings.microcollisionSpeed),
+                 "settings.microcollisionSpeed", "must be finite and not negative");
+  requireSetting(settings.absoluteTolerance > 0 && std::isfinite(settings.absoluteTolerance),
+                 "settings.absoluteTolerance", "must be finite and positive");
+  requireSetting(settings.relativeTolerance >= 0 && std::isfinite(settings.relativeTolerance),
+                 "settings.relativeTolerance", "must be finite and not negative");
+  requireSetting(settings.stickingTolerance > 0 && settings.stickingTolerance < 1, "settings.stickingTolerance",
+                 "must lie in (0, 1)");
+  requireSetting(settings.maxSteps >= 1, "settings.maxSteps", "must be at least 1");
+  if (A.isStatic() && B.isStatic()) failInput("bodies", "both static: an impulse can move neither");
+
+  ImpulseResult result;
+  result.kineticEnergyBefore = A.kineticEnergy(a) + B.kineticEnergy(b);
+  result.kineticEnergyAfter = result.kineticEnergyBefore;
+  result.restitution = material.restitution;
+
+  // The contact frame (t1, t2, n).
+  const Eigen::Vector3d n = contact.normal.normalized();
+  const Eigen::Vector3d t1 = n.unitOrthogonal();
+  const Eigen::Vector3d t2 = n.cross(t1);
+  Eigen::Matrix3d frame;
+  frame << t1, t2, n;
+
+  const Eigen::Vector3d u0 = B.velocityAt(b, contact.point) - A.velocityAt(a, contact.point);
+  const double un0 = u0.dot(n);
+  result.approachSpeed = -un0;
+  result.separationSpeed = un0;
+  if (!(un0 < 0)) return result;  // not approaching: nothing to resolve
+
+  double e = material.restitution;
+  result.status = ImpulseStatus::Collision;
+  if (-un0 < settings.microcollisionSpeed) {
+    e = std::min(1.0, std::max(e, settings.microcollisionSpeed / -un0));
+    result.status = ImpulseStatus::Microcollision;
+  }
+  result.restitution = e;
+
+  // Scales (see State above).
+  const Eigen::Matrix3d K = frame.transpose() *
+                            (collisionMatrix(A, a, contact.point) + collisionMatrix(B, b, contact.point)) * frame;
+  const double U = u0.norm();
+  const double Knn = K(2, 2);  // > 0: at least one body is dynamic
+  const double P = U / Knn;
+
+  Collision c;
+  c.K = K / Knn;
+  c.u0 = frame.transpose() * u0 / U;
+  c.mu = material.friction;
+  c.zero = settings.stickingTolerance;
+  if (c.mu > 0) {
+    if (c.u0.head<2>().norm() <= c.zero) {
+      c.tangentialStop();
+    } else {
+      c.friction = Friction::Sliding;
+    }
+  }
+
+  // Integrate over sigma until restitution ends.
+  auto controlled = odeint::make_controlled<odeint::runge_kutta_dopri5<State>>(settings.absoluteTolerance,
+                                                                              settings.relativeTolerance);
+  Phase phase = Phase::Compression;
+  double wTarget = 0;
+  State y = {0, 0, 0}, dydsigma;
+  double sigma = 0, h = 0.01;
+  c(y, dydsigma, sigma);
+  // One fixed-length Dormand-Prince step from a state (a fresh stepper each time: the
+  // stepper keeps the derivative of its last step, which belongs to another state).
+  auto plainStep = [&](State& s, double from, double length) {
+    odeint::runge_kutta_dopri5<State> plain;
+    plain.do_step(c, s, from, length);
+  };
+  int steps = 0;
+
+  // The events that end the current stretch of the integration, at a state.
+  enum Event { kNone = 0, kStop = 1, kCompressed = 2, kRestituted = 4 };
+  auto events = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
+    int ev = kNone;
+    const Eigen::Vector3d u = c.velocity(s, sig);
+    if (c.friction == Friction::Sliding && utStart.norm() > c.zero) {
+      const Eigen::Vector2d ut = u.head<2>();
+      if (ut.norm() <= c.zero || ut.dot(utStart) <= 0) ev |= kStop;
+    }
+    if (phase == Phase::Compression && u.z() >= 0) ev |= kCompressed;
+    if (phase == Phase::Restitution && s[2] >= wTarget) ev |= kRestituted;
+    return ev;
+  };
+
+  while (phase != Phase::Done) {
+    if (steps >= settings.maxSteps || !(sigma < 1e12)) {
+      result.status = ImpulseStatus::StepCap;
+      break;
+    }
+    ++steps;
+    const State yPrev = y;
+    const double sigmaPrev = sigma;
+    const Eigen::Vector2d utStart = c.velocity(y, sigma).head<2>();
+    // While sliding towards u_t = 0, no step much past the linear estimate of the stop, so
+    // no step straddles the kink of Coulomb's law by much (the stop is then located below).
+    if (c.friction == Friction::Sliding && utStart.norm() > c.zero) {
+      State dy;
+      c(y, dy, sigma);
+      const Eigen::Vector2d rate = (c.K * Eigen::Vector3d(dy[0], dy[1], 1)).head<2>();
+      const double closing = -rate.dot(utStart) / utStart.norm();
+      if (closing > 0) h = std::min(h, 1.5 * utStart.norm() / closing + 1e-12);
+    }
+    // The FSAL form of the step: the derivative at y is passed in (and recomputed after
+    // every change the integrator does not know of: a located event, a friction mode).
+    if (controlled.try_step(c, y, dydsigma, sigma, h) != odeint::success) continue;
+    int ev = events(y, sigma, utStart);
+    if (ev == kNone) continue;
+
+    // A phase change inside the step: bisect its length on "some event has happened",
+    // redoing the step from its start with the plain Dormand-Prince stepper.
+    double lo = 0, hi = sigma - sigmaPrev;
+    for (int k = 0; k < 100 && hi - lo > 1e-15 * std::max(1.0, sigmaPrev + hi); ++k) {
+      const double mid = 0.5 * (lo + hi);
+      State trial = yPrev;
+      plainStep(trial, sigmaPrev, mid);
+      if (events(trial, sigmaPrev + mid, utStart) != kNone) {
+        hi = mid;
+      } else {
+        lo = mid;
+      }
+    }
+    y = yPrev;
+    plainStep(y, sigmaPrev, hi);
+    sigma = sigmaPrev + hi;
+    ev = events(y, sigma, utStart);
+
+    if (ev & kStop) c.tangentialStop();
+    if (ev & kCompressed) {
+      // End of compression: W_c = w now; restitution ends at (1 - e^2) W_c (Stronge).
+      wTarget = (1 - e * e) * y[2];
+      phase = Phase::Restitution;
+      if (y[2] >= wTarget) phase = Phase::Done;  // e = 0: no restitution
+    }
+    if (phase == Phase::Restitution && (ev & kRestituted)) phase = Phase::Done;
+    c(y, dydsigma, sigma);
+  }
+  result.integratorSteps = steps;
+  result.sticking = c.friction == Friction::Sticking;
+
+  // Apply p to B and -p to A.
+  const Eigen::Vector3d p = P * (frame * Eigen::Vector3d(y[0], y[1], sigma));
+  result.impulse = p;
+  if (!B.isStatic()) {
+    b.velocity += B.inverseMass() * p;
+    b.angularVelocity +=
+        B.inverseInertiaWorld(b.worldFromBody.rotation) * (contact.point - b.worldFromBody.translation).cross(p);
+  }
+  if (!A.isStatic()) {
+    a.velocity -= A.inverseMass() * p;
+    a.angularVelocity -=
+        A.inverseInertiaWorld(a.worldFromBody.rotation) * (contact.point - a.worldFromBody.translation).cross(p);
+  }
+  result.kineticEnergyAfter = A.kineticEnergy(a) + B.kineticEnergy(b);
+  result.separationSpeed = (B.velocityAt(b, contact.point) - A.velocityAt(a, contact.point)).dot(n);
+  return result;
+}
+
+}  // namespace gjkx

@@ -1,0 +1,3 @@
+#include <gjkx/dynamics/free_flight.hpp>
+#include <catch2/catch.hpp>
+TEST_CASE("x"){}

@@ -1,0 +1,3 @@
+#include <gjkx/dynamics/impulse.hpp>
+#include <catch2/catch.hpp>
+TEST_CASE("y"){}
