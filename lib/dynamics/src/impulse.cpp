@@ -45,7 +45,8 @@ struct Collision {
   double mu = 0;
   Friction friction = Friction::None;
   Eigen::Vector2d stick = Eigen::Vector2d::Zero();  // d_t while sticking
-  Eigen::Vector2d ray = Eigen::Vector2d::Zero();    // the sliding direction while |u_t| is ~0
+  Eigen::Vector2d ray = Eigen::Vector2d::Zero();    // the sliding direction leaving u_t = 0
+  bool onRay = false;                               // sliding leaves u_t = 0 along `ray`
   double zero = 0;                                  // tangential speed counted as zero
 
   Eigen::Vector3d velocity(const State& y, double sigma) const { return u0 + K * Eigen::Vector3d(y[0], y[1], sigma); }
@@ -58,7 +59,7 @@ struct Collision {
       // Coulomb: the friction impulse opposes the sliding velocity, mu per unit normal impulse.
       const Eigen::Vector2d ut = u.head<2>();
       const double speed = ut.norm();
-      const Eigen::Vector2d dir = speed > zero ? Eigen::Vector2d(ut / speed) : ray;
+      const Eigen::Vector2d dir = (onRay || !(speed > 0)) ? ray : Eigen::Vector2d(ut / speed);
       dt = -mu * dir;
     } else if (friction == Friction::Sticking) {
       dt = stick;
@@ -126,9 +127,17 @@ struct Collision {
       friction = Friction::Sticking;
       stick = d;
     } else {
+      // Sliding resumes along the ray, with the friction impulse held opposite it until
+      // u_t has grown well clear of zero (its own direction is noise before that).
       friction = Friction::Sliding;
       ray = slidingRay();
+      onRay = true;
     }
+  }
+
+  // Leaves the ray once u_t is clearly along it.
+  void leaveRay(const Eigen::Vector2d& ut) {
+    if (onRay && ut.norm() > 1000 * zero && ut.dot(ray) > 0) onRay = false;
   }
 };
 
@@ -180,10 +189,11 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
   result.separationSpeed = un0;
   if (!(un0 < 0)) return result;  // not approaching: nothing to resolve
 
+  // A microcollision: restitution 1 (see the header).
   double e = material.restitution;
   result.status = ImpulseStatus::Collision;
   if (-un0 < settings.microcollisionSpeed) {
-    e = std::min(1.0, std::max(e, settings.microcollisionSpeed / -un0));
+    e = 1;
     result.status = ImpulseStatus::Microcollision;
   }
   result.restitution = e;
@@ -224,12 +234,22 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
   };
   int steps = 0;
 
+  // Sliding has stopped (|u_t| within the tolerance): close the remainder with the
+  // tangential impulse -A^-1 u_t, then stick or slide on along the ray.
+  auto stopSliding = [&]() {
+    const Eigen::Vector2d ut = c.velocity(y, sigma).head<2>();
+    const Eigen::Vector2d dp = -c.K.topLeftCorner<2, 2>().ldlt().solve(ut);
+    y[0] += dp.x();
+    y[1] += dp.y();
+    c.tangentialStop();
+  };
+
   // The events that end the current stretch of the integration, at a state.
   enum Event { kNone = 0, kStop = 1, kCompressed = 2, kRestituted = 4 };
   auto events = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
     int ev = kNone;
     const Eigen::Vector3d u = c.velocity(s, sig);
-    if (c.friction == Friction::Sliding && utStart.norm() > c.zero) {
+    if (c.friction == Friction::Sliding && !c.onRay && utStart.norm() > c.zero) {
       const Eigen::Vector2d ut = u.head<2>();
       if (ut.norm() <= c.zero || ut.dot(utStart) <= 0) ev |= kStop;
     }
@@ -247,18 +267,34 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     const State yPrev = y;
     const double sigmaPrev = sigma;
     const Eigen::Vector2d utStart = c.velocity(y, sigma).head<2>();
-    // While sliding towards u_t = 0, no step much past the linear estimate of the stop, so
-    // no step straddles the kink of Coulomb's law by much (the stop is then located below).
-    if (c.friction == Friction::Sliding && utStart.norm() > c.zero) {
+    // Sliding towards u_t = 0: Coulomb's law has a kink there, which an adaptive step
+    // straddling it cannot resolve (stages on both sides of the kink can even agree on a
+    // false cycle around zero). So no step goes beyond half the linear estimate of the
+    // stop, sigma* = |u_t| / (closing rate): |u_t| shrinks geometrically and smoothly. Once
+    // it is below the sticking tolerance, the rest is closed by a tangential impulse
+    // dp_t = -A^-1 u_t (A the tangential block of K), which sets u_t to zero and takes
+    // energy out (dE = -u_t^T A^-1 u_t / 2); its size is of the order of the tolerance.
+    if (c.friction == Friction::Sliding && !c.onRay) {
+      const double speed = utStart.norm();
+      if (speed <= c.zero) {
+        stopSliding();
+        c(y, dydsigma, sigma);
+        --steps;
+        continue;
+      }
       State dy;
       c(y, dy, sigma);
       const Eigen::Vector2d rate = (c.K * Eigen::Vector3d(dy[0], dy[1], 1)).head<2>();
-      const double closing = -rate.dot(utStart) / utStart.norm();
-      if (closing > 0) h = std::min(h, 1.5 * utStart.norm() / closing + 1e-12);
+      const double closing = -rate.dot(utStart) / speed;
+      if (closing > 0) h = std::min(h, 0.5 * speed / closing);
     }
     // The FSAL form of the step: the derivative at y is passed in (and recomputed after
     // every change the integrator does not know of: a located event, a friction mode).
     if (controlled.try_step(c, y, dydsigma, sigma, h) != odeint::success) continue;
+    if (c.onRay) {
+      c.leaveRay(c.velocity(y, sigma).head<2>());
+      if (!c.onRay) c(y, dydsigma, sigma);  // the friction law changed form: a fresh derivative
+    }
     int ev = events(y, sigma, utStart);
     if (ev == kNone) continue;
 
@@ -280,7 +316,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     sigma = sigmaPrev + hi;
     ev = events(y, sigma, utStart);
 
-    if (ev & kStop) c.tangentialStop();
+    if (ev & kStop) stopSliding();
     if (ev & kCompressed) {
       // End of compression: W_c = w now; restitution ends at (1 - e^2) W_c (Stronge).
       wTarget = (1 - e * e) * y[2];

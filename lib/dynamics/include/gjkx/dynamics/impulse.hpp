@@ -28,11 +28,18 @@
 ///   change (sticking, end of compression, end of restitution) is located by bisection
 ///   on the step that crossed it.
 /// - *Microcollisions* (Mirtich's thesis, ch. 4): resting contact is a train of tiny
-///   collisions. Below a threshold approach speed \f$v_\mu\f$ the restitution is raised to
-///   \f$e' = \min(1, \max(e, v_\mu / v))\f$, so the bodies separate at \f$\min(v, v_\mu)\f$ at least
-///   (frictionless), enough to leave before gravity brings them back, and energy is never
-///   created (\f$e' \le 1\f$). The scene chooses \f$v_\mu\f$ from gravity and its collision
-///   tolerance (e.g. \f$\sqrt{2 g\,\varepsilon}\f$: the speed gravity gives over the tolerance).
+///   collisions. Below a threshold approach speed \f$v_\mu\f$ a collision is processed with
+///   restitution 1, so the bodies separate (frictionless) at the speed they met instead
+///   of settling into each other: a body resting under gravity hops in collisions slower
+///   than \f$v_\mu\f$, never sinks, and no energy is created. This is the "minimum
+///   separation" the scheme needs without adding energy: the raised restitution is the
+///   largest that conserves it. The scene chooses \f$v_\mu\f$ from gravity and its collision
+///   tolerance, e.g. \f$v_\mu = \sqrt{2 g\,\varepsilon}\f$, the speed gravity gives over the tolerance
+///   \f$\varepsilon\f$, so a hop never rises above the tolerance.
+/// - Once sliding slows to within a tolerance of zero, the last sliver is closed by the
+///   tangential impulse \f$-A^{-1}u_t\f$ (A the tangential block of K); it removes energy and is
+///   of the order of the tolerance (ImpulseSettings::stickingTolerance). An integration
+///   cap ends in ImpulseStatus::StepCap, with the impulse built so far applied.
 #pragma once
 
 #include <gjkx/dynamics/rigid_body.hpp>
@@ -57,7 +64,7 @@ struct CollisionMaterial {
 
 /// Settings of the impulse integration.
 struct ImpulseSettings {
-  /// Approach speeds below this are microcollisions (restitution raised, see the file
+  /// Approach speeds below this are microcollisions (restitution 1, see the file
   /// comment); 0 turns microcollisions off.
   double microcollisionSpeed = 0;
   /// Absolute tolerance of the Dormand–Prince step control, on the impulse and work scaled
@@ -65,8 +72,9 @@ struct ImpulseSettings {
   double absoluteTolerance = 1e-12;
   /// Relative tolerance of the step control.
   double relativeTolerance = 1e-12;
-  /// The tangential speed counted as zero (sticking), as a fraction of the initial relative speed.
-  double stickingTolerance = 1e-10;
+  /// The tangential speed counted as zero (sliding stops), as a fraction of the initial relative
+  /// speed; the remainder is removed by a tangential impulse of that order.
+  double stickingTolerance = 1e-9;
   /// Cap on the integrator's steps; reaching it ends in ImpulseStatus::StepCap.
   int maxSteps = 100000;
 };
@@ -75,7 +83,7 @@ struct ImpulseSettings {
 enum class ImpulseStatus {
   Separating,      ///< not approaching at the contact (\f$u_n \ge 0\f$): nothing applied
   Collision,       ///< a collision integrated through compression and restitution
-  Microcollision,  ///< a collision below the microcollision speed, restitution raised
+  Microcollision,  ///< a collision below the microcollision speed, restitution 1
   StepCap          ///< the integrator hit ImpulseSettings::maxSteps; the impulse so far is applied
 };
 
@@ -89,7 +97,7 @@ struct ImpulseResult {
   double approachSpeed = 0;
   /// \f$u_n\f$ after the collision.
   double separationSpeed = 0;
-  /// The restitution used (raised for a microcollision).
+  /// The restitution used (1 for a microcollision).
   double restitution = 0;
   /// Kinetic energy of A and B before.
   double kineticEnergyBefore = 0;
