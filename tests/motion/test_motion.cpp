@@ -252,3 +252,23 @@ TEST_CASE("motion free flight rejects bad input", "[motion][input]") {
   bad.translation.y() = nan;
   REQUIRE_THROWS_WITH(Motion<double>::freeFlight(bad, z, z, I, 0.0, 1.0), Contains("motion.start.translation"));
 }
+
+// The certified extrusion test trusts the bound: every body point's acceleration along a
+// free flight, measured by second differences, stays within pointAcceleration(r).
+TEST_CASE("motion free flight's bound covers every point's acceleration", "[motion]") {
+  const Pose<double> start = Pose<double>::fromAxisAngle(Vec<double>(0, 1, 1), 0.2, Vec<double>(1, 1, 1));
+  const gjkx::Matrix3<double> end =
+      Eigen::AngleAxis<double>(2.5, Vec<double>(1, -1, 0.3).normalized()).toRotationMatrix() * start.rotation;
+  const Motion<double> m = Motion<double>::freeFlight(start, Vec<double>(0, 2, 0), Vec<double>(0, 0, -9.81), end, 0.0, 0.25);
+  const gjkx::MotionBound<double> b = m.bound();
+  const Vec<double> bodyPoint(0.3, -0.4, 1.2);
+  const double r = bodyPoint.norm(), h = 1e-4;
+  double largest = 0;
+  for (int i = 1; i < 100; ++i) {
+    const double t = 0.25 * i / 100;
+    const Vec<double> acc = (m.pose(t + h)(bodyPoint) - 2 * m.pose(t)(bodyPoint) + m.pose(t - h)(bodyPoint)) / (h * h);
+    largest = std::max(largest, acc.norm());
+  }
+  CHECK(largest <= b.pointAcceleration(r) * (1 + 1e-4));
+  CHECK(largest >= 0.5 * b.pointAcceleration(r));  // and the bound is not loose
+}
