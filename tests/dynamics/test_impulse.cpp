@@ -56,6 +56,7 @@ TEST_CASE("head-on spheres rebound with -e times the approach speed", "[dynamics
       CHECK(r.separationSpeed == Approx(-e * before).margin(1e-12));
       CHECK(a.angularVelocity.norm() < 1e-15);
       CHECK(b.angularVelocity.norm() < 1e-15);
+      CHECK(r.integratorSteps == 0);  // frictionless: the impulse is linear, in closed form
       // Equal masses, e = 1: the velocities swap (Newton's cradle).
       if (e == 1.0 && densityB == 1.0) {
         CHECK((a.velocity - Eigen::Vector3d(-0.5, 0, 0)).norm() < 1e-12);

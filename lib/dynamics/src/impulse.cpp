@@ -258,7 +258,39 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     return ev;
   };
 
+  // Without sliding (frictionless, or stuck: stuck stays stuck, K being constant) the
+  // impulse direction d = (d_t, 1) is constant, so u_n grows linearly,
+  // u_n(sigma) = u_n + k (sigma - sigma_0) with k = (Khat d)_n > 0, and the work is a
+  // quadratic: W = W_0 + u_n s + k s^2 / 2. The rest of the collision is then closed form:
+  // compression ends after s_c = -u_n / k with W_c = W_0 - u_n^2 / (2k), and restitution
+  // ends where W_c + k s^2 / 2 reaches (1 - e^2) W_c. No integration is needed.
+  auto finishLinear = [&]() {
+    const Eigen::Vector3d d(c.friction == Friction::Sticking ? c.stick.x() : 0.0,
+                            c.friction == Friction::Sticking ? c.stick.y() : 0.0, 1.0);
+    const double k = (c.K * d).z();
+    auto advance = [&](double s) {
+      const double un = c.velocity(y, sigma).z();
+      y[0] += s * d.x();
+      y[1] += s * d.y();
+      y[2] += un * s + 0.5 * k * s * s;
+      sigma += s;
+    };
+    if (phase == Phase::Compression) {
+      const double un = c.velocity(y, sigma).z();
+      if (un < 0) advance(-un / k);
+      wTarget = (1 - e * e) * y[2];
+      phase = Phase::Restitution;
+    }
+    const double un = std::max(0.0, c.velocity(y, sigma).z());
+    if (y[2] < wTarget) advance((-un + std::sqrt(un * un + 2 * k * (wTarget - y[2]))) / k);
+    phase = Phase::Done;
+  };
+
   while (phase != Phase::Done) {
+    if (c.friction != Friction::Sliding) {
+      finishLinear();
+      break;
+    }
     if (steps >= settings.maxSteps || !(sigma < 1e12)) {
       result.status = ImpulseStatus::StepCap;
       break;
