@@ -32,6 +32,28 @@ double relativeNormalSpeed(const RigidBody& A, const BodyState& a, const RigidBo
   return (B.velocityAt(b, c.point) - A.velocityAt(a, c.point)).dot(c.normal);
 }
 
+// The collision matrix measured rather than assembled: apply a unit impulse along each
+// axis (to B, and its opposite to A) through the bodies' momenta, and read the change of
+// the relative velocity at the contact point. Column i of K is that change.
+Eigen::Matrix3d measuredCollisionMatrix(const RigidBody& A, const BodyState& a, const RigidBody& B, const BodyState& b,
+                                        const Eigen::Vector3d& point) {
+  auto relative = [&](const BodyState& sa, const BodyState& sb) -> Eigen::Vector3d {
+    return B.velocityAt(sb, point) - A.velocityAt(sa, point);
+  };
+  Eigen::Matrix3d K;
+  for (int i = 0; i < 3; ++i) {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    p[i] = 1;
+    BodyState a2 = a, b2 = b;
+    b2.velocity += B.inverseMass() * p;
+    b2.angularVelocity += B.inverseInertiaWorld(b.worldFromBody.rotation) * (point - b.worldFromBody.translation).cross(p);
+    a2.velocity -= A.inverseMass() * p;
+    a2.angularVelocity -= A.inverseInertiaWorld(a.worldFromBody.rotation) * (point - a.worldFromBody.translation).cross(p);
+    K.col(i) = relative(a2, b2) - relative(a, b);
+  }
+  return K;
+}
+
 Eigen::Matrix3d randomRotation(std::mt19937& rng) {
   std::normal_distribution<double> n(0, 1);
   return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
@@ -93,7 +115,7 @@ TEST_CASE("an off-centre collision conserves linear and angular momentum", "[dyn
 TEST_CASE("kinetic energy never rises in a collision (random cases)", "[dynamics][impulse]") {
   std::mt19937 rng(2024);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1.0), unit(0, 1);
-  int collisions = 0, sticking = 0;
+  int collisions = 0, sticking = 0, resumed = 0;
   // One draw per statement, so the sequence does not depend on the order of evaluation.
   auto vec = [&](double scale) {
     const double x = u(rng), y = u(rng), z = u(rng);
@@ -104,7 +126,7 @@ TEST_CASE("kinetic energy never rises in a collision (random cases)", "[dynamics
     const double density = 1 + 9 * unit(rng);
     return RigidBody::dynamic(massProperties(Box<double>(Eigen::Vector3d(hx, hy, hz)), density));
   };
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < 1500; ++i) {
     const RigidBody A = (i % 5 == 0) ? RigidBody::fixed() : box();
     const RigidBody B = box();
     const Eigen::Vector3d pa = vec(1), va = vec(3), wa = vec(5);
@@ -116,18 +138,30 @@ TEST_CASE("kinetic energy never rises in a collision (random cases)", "[dynamics
     const Contact c{point, normal};
     const double e = unit(rng), mu = 1.5 * unit(rng);
     const CollisionMaterial material{e, mu};
+    // Whether the contact can stick (Mirtich): the impulse direction (d_t, 1) that keeps the
+    // tangential velocity still, K_tt d_t = -K_tn, must lie in the friction cone.
+    const Eigen::Matrix3d K = measuredCollisionMatrix(A, a, B, b, c.point);
+    const Eigen::Vector3d t1 = c.normal.unitOrthogonal(), t2 = c.normal.cross(t1);
+    Eigen::Matrix3d frame;
+    frame << t1, t2, c.normal;
+    const Eigen::Matrix3d Kc = frame.transpose() * K * frame;
+    const double stickRatio = Kc.topLeftCorner<2, 2>().ldlt().solve(Kc.topRightCorner<2, 1>()).norm();
     const ImpulseResult r = resolveCollision(A, a, B, b, c, material);
     if (r.status == ImpulseStatus::Separating) continue;
     ++collisions;
     sticking += r.sticking;
+    resumed += r.slidingResumed;
+    if (r.sticking) CHECK(stickRatio <= mu * (1 + 1e-9));
+    if (r.slidingResumed) CHECK(stickRatio >= mu * (1 - 1e-9));
     INFO("case " << i << ": e " << material.restitution << ", mu " << material.friction);
     CHECK(r.status == ImpulseStatus::Collision);
     CHECK(r.kineticEnergyAfter <= r.kineticEnergyBefore * (1 + 1e-12));
     CHECK(r.impulse.dot(c.normal) > 0);  // the normal impulse pushes B away from A
     CHECK(relativeNormalSpeed(A, a, B, b, c) >= -1e-9 * r.approachSpeed);
   }
-  CHECK(collisions > 100);
-  CHECK(sticking > 10);  // both friction regimes are exercised
+  CHECK(collisions > 400);
+  CHECK(sticking > 40);  // every friction regime is exercised: sliding, sticking, and
+  CHECK(resumed > 0);    // sliding that stops where it cannot stick and resumes on a ray
 }
 
 // A ball sliding fast on a static floor: it slides all through the collision, so friction

@@ -47,6 +47,7 @@ struct Collision {
   Eigen::Vector2d stick = Eigen::Vector2d::Zero();  // d_t while sticking
   Eigen::Vector2d ray = Eigen::Vector2d::Zero();    // the sliding direction leaving u_t = 0
   bool onRay = false;                               // sliding leaves u_t = 0 along `ray`
+  bool resumed = false;                             // sliding has resumed along a ray
   double zero = 0;                                  // tangential speed counted as zero
 
   Eigen::Vector3d velocity(const State& y, double sigma) const { return u0 + K * Eigen::Vector3d(y[0], y[1], sigma); }
@@ -132,6 +133,7 @@ struct Collision {
       friction = Friction::Sliding;
       ray = slidingRay();
       onRay = true;
+      resumed = true;
     }
   }
 
@@ -360,6 +362,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
   }
   result.integratorSteps = steps;
   result.sticking = c.friction == Friction::Sticking;
+  result.slidingResumed = c.resumed;
 
   // Apply p to B and -p to A.
   const Eigen::Vector3d p = P * (frame * Eigen::Vector3d(y[0], y[1], sigma));

@@ -105,6 +105,9 @@ struct ImpulseResult {
   double kineticEnergyAfter = 0;
   /// True if the contact ended sticking (no tangential sliding).
   bool sticking = false;
+  /// True if sliding stopped where sticking was impossible (the sticking impulse outside
+  /// the friction cone) and resumed along Mirtich's ray.
+  bool slidingResumed = false;
   /// Integrator steps taken (accepted and rejected).
   int integratorSteps = 0;
 };
