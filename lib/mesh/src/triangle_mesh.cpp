@@ -112,6 +112,12 @@ TriangleMesh readMesh(const std::string& path, const MeshRequirements& requireme
                             " vertices)");
         tri[k] = welded[index];
       }
+      // A triangle whose corners weld to fewer than three vertices has no area and no
+      // edges to share; real files have them (Assimp's Spider.stl), so it is left out, counted.
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+        ++mesh.droppedTriangles;
+        continue;
+      }
       mesh.triangles.push_back(tri);
     }
   }

@@ -35,7 +35,6 @@
 #include <limits>
 #include <stdexcept>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -57,8 +56,8 @@ struct PiecePair {
 struct BodyPairCounters {
   /// BVTT nodes tested (pairs of 14-DOPs put to the k-DOP extrusion test).
   int nodesVisited = 0;
-  /// 14-DOPs computed (each: 14 hill climbs; twice for an interval, once for a static query).
-  int kdopsComputed = 0;
+  /// Support queries run for slab ends (a full 14-DOP is 14; a test that one slab settles needs 4).
+  int supportQueries = 0;
   /// The size of the front the query ended on.
   int frontSize = 0;
   /// Piece pairs that survived.
@@ -114,7 +113,14 @@ class BodyPairQuery {
     int b;
     /// True if the last query proved it apart; false for a surviving leaf pair.
     bool disjoint;
+    /// The slab side that proved it apart (2k for "B above A" along slab k, 2k + 1 for
+    /// "A above B"), tried first next time; -1 if none.
+    int slab;
+    /// The BVTT parent (A's node in the high 32 bits, B's in the low), `kNoParent` for the root pair.
+    std::uint64_t parent;
   };
+  /// The parent of the root pair.
+  static constexpr std::uint64_t kNoParent = ~std::uint64_t(0);
 
   /// A query over the hierarchies of A and B. Throws std::invalid_argument for bad settings.
   BodyPairQuery(const Bvh<S>& a, const Bvh<S>& b, BodyPairSettings<S> settings = {})
@@ -134,12 +140,12 @@ class BodyPairQuery {
     BodyPairOutput<S> out;
     counters_ = &out.counters;
     if (!settings_.frontTracking || front_.empty()) {
-      front_.assign(1, FrontNode{Bvh<S>::root(), Bvh<S>::root(), false});
-      parentOf_.clear();
+      front_.assign(1, FrontNode{Bvh<S>::root(), Bvh<S>::root(), false, -1, kNoParent});
+      if (!settings_.frontTracking) parentOf_.clear();
     }
     std::vector<FrontNode> next;
     next.reserve(front_.size() + 16);
-    for (const FrontNode& node : front_) descend(node.a, node.b, next, out.pairs);
+    for (const FrontNode& node : front_) descend(node, next, out.pairs);
     if (settings_.frontTracking) climb(next);
     front_ = std::move(next);
     std::sort(out.pairs.begin(), out.pairs.end());
@@ -163,56 +169,65 @@ class BodyPairQuery {
   const BodyPairSettings<S>& settings() const { return settings_; }
 
  private:
-  // One body's pose-dependent state: its 14-DOPs at t0 and t1, computed on demand (a
-  // node's only when the traversal reaches it) and reused within one query.
+  // One body's pose-dependent state: the slab ends of its nodes' 14-DOPs at t0 and t1,
+  // each computed on demand (one support query, when a test first needs it) and reused
+  // within the query. A test that a slab settles reads 4 of a node pair's 56 values.
   struct Body {
     explicit Body(const Bvh<S>& h)
-        : bvh(&h), k0(h.nodes().size()), k1(h.nodes().size()), stamp(h.nodes().size(), 0), hints0(h.nodes().size()),
-          hints1(h.nodes().size()) {
-      for (auto& h0 : hints0) h0.fill(0);
-      for (auto& h1 : hints1) h1.fill(0);
+        : bvh(&h), values(h.nodes().size()), known(h.nodes().size(), 0), stamp(h.nodes().size(), 0),
+          hints(h.nodes().size()) {
+      for (auto& hint : hints) hint.fill(0);
     }
     void begin(const Motion<S>& motion, S t0, S t1, unsigned current) {
       const Pose<S> pose0 = motion.pose(t0);
-      frame0 = KdopFrame<S>::of(pose0);
+      frame[0] = KdopFrame<S>::of(pose0);
       sameEnds = (t1 == t0) || motion.isStatic();
       const Pose<S> pose1 = sameEnds ? pose0 : motion.pose(t1);
-      if (!sameEnds) frame1 = KdopFrame<S>::of(pose1);
+      frame[1] = sameEnds ? frame[0] : KdopFrame<S>::of(pose1);
       bound = motion.bound();
-      // Round-off allowance of an inner node's 14-DOP (see `ensure`): support values are
+      // Round-off allowance of an inner node's 14-DOP (see `value`): support values are
       // at most sqrt(3) r + |p|_1 in size, r the node's radius about the body origin.
       reach = std::max(pose0.translation.template lpNorm<1>(), pose1.translation.template lpNorm<1>());
       stampNow = current;
     }
-    // Node i's 14-DOPs at both ends. An inner node's are widened by a few round-offs of
-    // their size, so that they hold their descendants' computed 14-DOPs (hill climbing on
-    // two different hulls may round differently): the BVH then prunes exactly what the
-    // all-pairs test prunes.
-    void ensure(int i, BodyPairCounters& counters) {
-      if (stamp[i] == stampNow) return;
-      stamp[i] = stampNow;
+    // Slab end of node i: slab k, upper end (hi_k) or lower (lo_k), at t0 (end 0) or t1.
+    // hi_k = d_k . S(d_k) + a_k . p (bvh.hpp, kdopAt). An inner node's ends are widened by
+    // a few round-offs of their size, so that they hold their descendants' computed ends
+    // (hill climbing on two different hulls may round differently): the BVH then prunes
+    // exactly what the all-pairs test prunes.
+    S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
+      if (sameEnds) end = 0;
+      if (stamp[i] != stampNow) {
+        stamp[i] = stampNow;
+        known[i] = 0;
+      }
+      const int slot = end * 14 + 2 * k + (upper ? 0 : 1);
+      if (known[i] & (1u << slot)) return values[i][slot];
+      known[i] |= 1u << slot;
+      ++counters.supportQueries;
       const BvhNode<S>& node = bvh->node(i);
-      k0[i] = kdopAt(node.hull, frame0, hints0[i]);
-      if (!sameEnds) k1[i] = kdopAt(node.hull, frame1, hints1[i]);
-      counters.kdopsComputed += sameEnds ? 1 : 2;
+      const Vector3<S>& d = frame[end].direction[k];
+      const Vector3<S> direction = upper ? d : Vector3<S>(-d);
+      S v = d.dot(node.hull.support(direction, hints[i][slot])) + frame[end].offset[k];
       if (!node.isLeaf()) {
         const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + reach);
-        k0[i].inflate(pad);
-        if (!sameEnds) k1[i].inflate(pad);
+        v += upper ? pad : -pad;
       }
+      values[i][slot] = v;
+      return v;
     }
-    const Kdop14<S>& end1(int i) const { return sameEnds ? k0[i] : k1[i]; }
     S acceleration(int i) const { return bound.pointAcceleration(bvh->node(i).hull.boundingRadius()); }
 
     const Bvh<S>* bvh;
-    KdopFrame<S> frame0, frame1;
+    KdopFrame<S> frame[2];
     bool sameEnds = true;
     MotionBound<S> bound;
     S reach = S(0);
     unsigned stampNow = 0;
-    std::vector<Kdop14<S>> k0, k1;
+    std::vector<std::array<S, 28>> values;
+    std::vector<std::uint32_t> known;
     std::vector<unsigned> stamp;
-    std::vector<std::array<SupportHint, 14>> hints0, hints1;
+    std::vector<std::array<SupportHint, 28>> hints;
   };
 
   std::uint64_t key(int a, int b) const {
@@ -228,90 +243,102 @@ class BodyPairQuery {
     return na.size >= nb.size;
   }
 
-  bool apart(int a, int b) {
-    ++counters_->nodesVisited;
-    bodyA_.ensure(a, *counters_);
-    bodyB_.ensure(b, *counters_);
-    return kdopExtrusionTest(bodyA_.k0[a], bodyA_.end1(a), bodyB_.k0[b], bodyB_.end1(b), duration_,
-                             bodyA_.acceleration(a), bodyB_.acceleration(b), settings_.variant, settings_.tolerance)
-        .separated;
+  // Slab side `side` (2k: B above A along slab k; 2k + 1: A above B) over the interval:
+  // the same gaps, in the same arithmetic, as `kdopExtrusionTest`.
+  bool sideSeparates(int a, int b, int side) {
+    const int k = side / 2;
+    const bool bAbove = side % 2 == 0;
+    const S scale = S(1) / Kdop14<S>::axisLength(k);
+    BodyPairCounters& c = *counters_;
+    const auto gap = [&](int end) {
+      return bAbove ? (bodyB_.value(b, k, false, end, c) - bodyA_.value(a, k, true, end, c)) * scale
+                    : (bodyA_.value(a, k, false, end, c) - bodyB_.value(b, k, true, end, c)) * scale;
+    };
+    const S gap0 = gap(0);
+    if (!(gap0 > settings_.tolerance)) return false;  // settled at t0: the t1 ends are not needed
+    return slabSeparatesOverInterval(gap0, gap(1), duration_, bodyA_.acceleration(a), bodyB_.acceleration(b),
+                                     settings_.variant, settings_.tolerance);
   }
 
-  // Tests BVTT node (a, b) and everything below it that is not proven apart; the nodes
+  // The k-DOP extrusion test of BVTT node (a, b): the slab side that proves it apart, or
+  // -1. The side that did last time (`hint`) is tried first: when the bodies move little
+  // it settles the test with 4 support queries.
+  int apart(int a, int b, int hint) {
+    ++counters_->nodesVisited;
+    if (hint >= 0 && sideSeparates(a, b, hint)) return hint;
+    for (int side = 0; side < 2 * Kdop14<S>::kSlabs; ++side)
+      if (side != hint && sideSeparates(a, b, side)) return side;
+    return -1;
+  }
+
+  // Tests BVTT node `start` and everything below it that is not proven apart; the nodes
   // where it stops go to `front`, the surviving leaf pairs to `pairs`.
-  void descend(int a, int b, std::vector<FrontNode>& front, std::vector<PiecePair>& pairs) {
+  void descend(const FrontNode& start, std::vector<FrontNode>& front, std::vector<PiecePair>& pairs) {
     stack_.clear();
-    stack_.push_back({a, b});
+    stack_.push_back(start);
     while (!stack_.empty()) {
-      const auto [i, j] = stack_.back();
+      const FrontNode n = stack_.back();
       stack_.pop_back();
-      if (apart(i, j)) {
-        front.push_back({i, j, true});
+      const int side = apart(n.a, n.b, n.slab);
+      if (side >= 0) {
+        front.push_back({n.a, n.b, true, side, n.parent});
         continue;
       }
-      const BvhNode<S>& ni = bodyA_.bvh->node(i);
-      const BvhNode<S>& nj = bodyB_.bvh->node(j);
+      const BvhNode<S>& ni = bodyA_.bvh->node(n.a);
+      const BvhNode<S>& nj = bodyB_.bvh->node(n.b);
       if (ni.isLeaf() && nj.isLeaf()) {
-        front.push_back({i, j, false});
+        front.push_back({n.a, n.b, false, -1, n.parent});
         pairs.push_back({ni.piece, nj.piece});
         continue;
       }
-      std::pair<int, int> first, second;
-      if (opensA(i, j)) {
-        first = {ni.left, j};
-        second = {ni.right, j};
+      FrontNode first{n.a, n.b, false, n.slab, key(n.a, n.b)}, second = first;
+      if (opensA(n.a, n.b)) {
+        first.a = ni.left;
+        second.a = ni.right;
       } else {
-        first = {i, nj.left};
-        second = {i, nj.right};
+        first.b = nj.left;
+        second.b = nj.right;
       }
-      if (settings_.frontTracking) {
-        parentOf_[key(first.first, first.second)] = key(i, j);
-        parentOf_[key(second.first, second.second)] = key(i, j);
-      }
+      if (settings_.frontTracking) parentOf_.emplace(key(n.a, n.b), n.parent);  // for when the front climbs to it
       stack_.push_back(second);
       stack_.push_back(first);
     }
   }
 
   // The front climbs back: where both children of a BVTT node are on the front and apart,
-  // the node itself is tested, and if it is apart it replaces them. Repeated until no
-  // node climbs, so a front can fall back to the root when the bodies part.
+  // the node itself is tested, and if it is apart it replaces them; a node that climbed
+  // may climb again. Two children of one node that are both on the front are neighbours in
+  // it (a descent writes the first child's sub-front, then the second's, and later queries
+  // keep that order), so one pass with a stack finds them, no search. A parent found not
+  // apart is not tried again for a few queries (`kClimbRetry`): climbing is an economy,
+  // never needed for the answer.
   void climb(std::vector<FrontNode>& front) {
-    for (bool changed = true; changed;) {
-      changed = false;
-      std::unordered_map<std::uint64_t, int> where;
-      where.reserve(front.size() * 2);
-      for (int i = 0; i < static_cast<int>(front.size()); ++i)
-        if (front[i].disjoint) where[key(front[i].a, front[i].b)] = i;
-      std::unordered_set<std::uint64_t> tried;
-      std::vector<char> removed(front.size(), 0);
-      const int count = static_cast<int>(front.size());
-      for (int i = 0; i < count; ++i) {
-        if (!front[i].disjoint || removed[i]) continue;
-        const auto parent = parentOf_.find(key(front[i].a, front[i].b));
-        if (parent == parentOf_.end() || !tried.insert(parent->second).second) continue;
-        const int pa = static_cast<int>(parent->second >> 32), pb = static_cast<int>(parent->second & 0xffffffffu);
-        const BvhNode<S>& na = bodyA_.bvh->node(pa);
-        const BvhNode<S>& nb = bodyB_.bvh->node(pb);
-        const bool a = opensA(pa, pb);
-        const auto c1 = where.find(a ? key(na.left, pb) : key(pa, nb.left));
-        const auto c2 = where.find(a ? key(na.right, pb) : key(pa, nb.right));
-        if (c1 == where.end() || c2 == where.end() || removed[c1->second] || removed[c2->second]) continue;
-        if (!apart(pa, pb)) continue;
-        removed[c1->second] = removed[c2->second] = 1;
-        front.push_back({pa, pb, true});
-        removed.push_back(0);
+    static constexpr unsigned kClimbRetry = 8;
+    std::vector<FrontNode>& out = climbed_;
+    out.clear();
+    for (const FrontNode& node : front) {
+      out.push_back(node);
+      while (out.size() >= 2) {
+        const FrontNode& x = out[out.size() - 2];
+        const FrontNode& y = out.back();
+        if (!x.disjoint || !y.disjoint || x.parent != y.parent || x.parent == kNoParent) break;
+        const std::uint64_t parent = x.parent;
+        const auto failed = climbFailed_.find(parent);
+        if (failed != climbFailed_.end() && stamp_ - failed->second < kClimbRetry) break;
+        const int pa = static_cast<int>(parent >> 32), pb = static_cast<int>(parent & 0xffffffffu);
+        const int side = apart(pa, pb, x.slab);
+        if (side < 0) {
+          climbFailed_[parent] = stamp_;
+          break;
+        }
+        const auto grand = parentOf_.find(parent);
+        out.pop_back();
+        out.pop_back();
+        out.push_back({pa, pb, true, side, grand == parentOf_.end() ? kNoParent : grand->second});
         ++counters_->climbs;
-        changed = true;
-      }
-      if (changed) {
-        std::vector<FrontNode> kept;
-        kept.reserve(front.size());
-        for (size_t i = 0; i < front.size(); ++i)
-          if (!removed[i]) kept.push_back(front[i]);
-        front = std::move(kept);
       }
     }
+    front.swap(out);
   }
 
   BodyPairSettings<S> settings_;
@@ -320,7 +347,8 @@ class BodyPairQuery {
   unsigned stamp_ = 0;
   std::vector<FrontNode> front_;
   std::unordered_map<std::uint64_t, std::uint64_t> parentOf_;
-  std::vector<std::pair<int, int>> stack_;
+  std::unordered_map<std::uint64_t, unsigned> climbFailed_;
+  std::vector<FrontNode> stack_, climbed_;
   BodyPairCounters* counters_ = nullptr;
 };
 

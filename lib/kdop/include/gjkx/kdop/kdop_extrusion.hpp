@@ -34,6 +34,17 @@ struct KdopExtrusionResult {
   int slab = -1;
 };
 
+/// One side of one slab over the interval: the gap between P's and Q's slab ends, in world
+/// units, is `gap0` at \f$t_0\f$ and `gap1` at \f$t_1\f$; true if it stays above `tolerance` in
+/// between (linear motion: both ends above suffice; certified: its lower bound
+/// `lowestSupportingDistance` does too).
+template <typename S>
+bool slabSeparatesOverInterval(S gap0, S gap1, S duration, S accelerationP, S accelerationQ, ExtrusionVariant variant,
+                               S tolerance) {
+  return gap0 > tolerance && gap1 > tolerance &&
+         lowestSupportingDistance(variant, gap0, gap1, duration, accelerationP, accelerationQ) > tolerance;
+}
+
 /// The k-DOP extrusion test of P and Q over \f$[t_0, t_1]\f$, given their 14-DOPs at both ends
 /// (`p0`, `p1`, `q0`, `q1`), the interval's length `duration`, and the bodies' point
 /// acceleration bounds `accelerationP`, `accelerationQ` (`MotionBound::pointAcceleration`;
@@ -46,12 +57,10 @@ KdopExtrusionResult kdopExtrusionTest(const Kdop14<S>& p0, const Kdop14<S>& p1, 
   for (int k = 0; k < Kdop14<S>::kSlabs; ++k) {
     const S scale = S(1) / Kdop14<S>::axisLength(k);
     // Q above P along a_k, then P above Q: each side's gap must stay open by itself.
-    const S above0 = (q0.lo[k] - p0.hi[k]) * scale, above1 = (q1.lo[k] - p1.hi[k]) * scale;
-    const S below0 = (p0.lo[k] - q0.hi[k]) * scale, below1 = (p1.lo[k] - q1.hi[k]) * scale;
-    if ((above0 > tolerance && above1 > tolerance &&
-         lowestSupportingDistance(variant, above0, above1, duration, accelerationP, accelerationQ) > tolerance) ||
-        (below0 > tolerance && below1 > tolerance &&
-         lowestSupportingDistance(variant, below0, below1, duration, accelerationP, accelerationQ) > tolerance))
+    if (slabSeparatesOverInterval((q0.lo[k] - p0.hi[k]) * scale, (q1.lo[k] - p1.hi[k]) * scale, duration, accelerationP,
+                                  accelerationQ, variant, tolerance) ||
+        slabSeparatesOverInterval((p0.lo[k] - q0.hi[k]) * scale, (p1.lo[k] - q1.hi[k]) * scale, duration, accelerationP,
+                                  accelerationQ, variant, tolerance))
       return {true, k};
   }
   return {};

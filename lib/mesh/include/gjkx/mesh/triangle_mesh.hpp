@@ -22,6 +22,8 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
   /// The triangles, three indices into `vertices` each.
   std::vector<std::array<int, 3>> triangles;
+  /// Triangles of the file left out because their corners coincide (no area); see `readMesh`.
+  int droppedTriangles = 0;
   /// Where it came from (a file name, or a name given by the caller), used in error messages.
   std::string source;
 };
@@ -35,7 +37,8 @@ struct MeshRequirements {
 
 /// Reads a triangle mesh from an OBJ, OFF, PLY or STL file (any format Assimp reads).
 /// All meshes of the file are merged; polygons are triangulated; vertices at the same
-/// position are welded. Throws std::runtime_error naming the file when it cannot be read
+/// position are welded, and triangles whose corners then coincide (no area) are left out
+/// and counted in `droppedTriangles`. Throws std::runtime_error naming the file when it cannot be read
 /// (missing, empty, not a mesh format Assimp understands), and std::invalid_argument
 /// naming the file and the fault when its content is wrong (see `validateMesh`).
 TriangleMesh readMesh(const std::string& path, const MeshRequirements& requirements = {});
