@@ -61,9 +61,13 @@ class Bvh {
   using Scalar = S;
 
   /// Builds the hierarchy of `pieces` (top-down, median split). Throws
-  /// std::invalid_argument ("bvh.pieces: ...") for an empty list.
+  /// std::invalid_argument ("bvh.pieces: ...") for an empty list, or for a mix of solid
+  /// pieces and polygons (a body is either solid or flat, in the plane z = 0).
   explicit Bvh(std::vector<Polytope<S>> pieces) : pieces_(std::move(pieces)) {
     if (pieces_.empty()) throw std::invalid_argument("bvh.pieces: a body needs at least one convex piece");
+    for (const auto& piece : pieces_)
+      if (piece.planar() != pieces_.front().planar())
+        throw std::invalid_argument("bvh.pieces: solid pieces and polygons (z = 0) cannot share a body");
     std::vector<int> order(pieces_.size());
     std::iota(order.begin(), order.end(), 0);
     nodes_.reserve(2 * pieces_.size());
@@ -93,7 +97,10 @@ class Bvh {
       const auto& v = pieces_[order[i]].vertices();
       points.insert(points.end(), v.begin(), v.end());
     }
-    BvhNode<S> node{last - first == 1 ? pieces_[order[first]] : Polytope<S>::hull(points)};
+    // Pieces in the plane z = 0 (a 2D figure's bodies) have a polygon as their hull.
+    const bool planar = pieces_[order[first]].planar();
+    BvhNode<S> node{last - first == 1 ? pieces_[order[first]]
+                                      : (planar ? Polytope<S>::polygon(points) : Polytope<S>::hull(points))};
     node.parent = parent;
     node.depth = depth;
     for (const auto& v : node.hull.vertices()) node.size = std::max(node.size, (v - node.hull.center()).norm());
