@@ -134,8 +134,8 @@ class BodyPairQuery {
   BodyPairOutput<S> query(const Motion<S>& motionA, const Motion<S>& motionB, S t0, S t1) {
     requireInterval(t0, t1, "bodyPair");
     ++stamp_;
-    bodyA_.begin(motionA, t0, t1, stamp_);
-    bodyB_.begin(motionB, t0, t1, stamp_);
+    bodyA_.begin(motionA, t0, t1);
+    bodyB_.begin(motionB, t0, t1);
     duration_ = t1 - t0;
     BodyPairOutput<S> out;
     counters_ = &out.counters;
@@ -170,47 +170,60 @@ class BodyPairQuery {
 
  private:
   // One body's pose-dependent state: the slab ends of its nodes' 14-DOPs at t0 and t1,
-  // each computed on demand (one support query, when a test first needs it) and reused
-  // within the query. A test that a slab settles reads 4 of a node pair's 56 values.
+  // each computed on demand (one support query, when a test first needs it). They are
+  // kept in two banks, each tied to one pose: a query whose t0 pose is the last query's t1
+  // pose (frames that follow each other) or the same pose again (a body at rest) reads
+  // the ends already computed there. A test that a slab settles reads 4 of a node pair's
+  // 56 ends.
   struct Body {
     explicit Body(const Bvh<S>& h)
-        : bvh(&h), values(h.nodes().size()), known(h.nodes().size(), 0), stamp(h.nodes().size(), 0),
+        : bvh(&h), values(h.nodes().size()), known(h.nodes().size(), {0, 0}), epochOf(h.nodes().size(), {0, 0}),
           hints(h.nodes().size()) {
       for (auto& hint : hints) hint.fill(0);
     }
-    void begin(const Motion<S>& motion, S t0, S t1, unsigned current) {
+    void begin(const Motion<S>& motion, S t0, S t1) {
       const Pose<S> pose0 = motion.pose(t0);
-      frame[0] = KdopFrame<S>::of(pose0);
-      sameEnds = (t1 == t0) || motion.isStatic();
-      const Pose<S> pose1 = sameEnds ? pose0 : motion.pose(t1);
-      frame[1] = sameEnds ? frame[0] : KdopFrame<S>::of(pose1);
+      const KdopFrame<S> frame0 = KdopFrame<S>::of(pose0);
+      const bool sameEnds = (t1 == t0) || motion.isStatic();
+      int b0 = bank[0].holds(frame0) ? 0 : (bank[1].holds(frame0) ? 1 : -1);
+      if (b0 < 0) {
+        b0 = 0;
+        renew(b0, frame0, pose0);
+      }
+      int b1 = b0;
+      if (!sameEnds) {
+        const Pose<S> pose1 = motion.pose(t1);
+        const KdopFrame<S> frame1 = KdopFrame<S>::of(pose1);
+        b1 = 1 - b0;
+        if (!bank[b1].holds(frame1)) renew(b1, frame1, pose1);
+      }
+      bankOf[0] = b0;
+      bankOf[1] = b1;
       bound = motion.bound();
-      // Round-off allowance of an inner node's 14-DOP (see `value`): support values are
-      // at most sqrt(3) r + |p|_1 in size, r the node's radius about the body origin.
-      reach = std::max(pose0.translation.template lpNorm<1>(), pose1.translation.template lpNorm<1>());
-      stampNow = current;
     }
     // Slab end of node i: slab k, upper end (hi_k) or lower (lo_k), at t0 (end 0) or t1.
     // hi_k = d_k . S(d_k) + a_k . p (bvh.hpp, kdopAt). An inner node's ends are widened by
     // a few round-offs of their size, so that they hold their descendants' computed ends
     // (hill climbing on two different hulls may round differently): the BVH then prunes
-    // exactly what the all-pairs test prunes.
+    // exactly what the all-pairs test prunes. Support values are at most sqrt(3) r + |p|_1
+    // in size, r the node's radius about the body origin.
     S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
-      if (sameEnds) end = 0;
-      if (stamp[i] != stampNow) {
-        stamp[i] = stampNow;
-        known[i] = 0;
+      const int b = bankOf[end];
+      if (epochOf[i][b] != bank[b].epoch) {
+        epochOf[i][b] = bank[b].epoch;
+        known[i][b] = 0;
       }
-      const int slot = end * 14 + 2 * k + (upper ? 0 : 1);
-      if (known[i] & (1u << slot)) return values[i][slot];
-      known[i] |= 1u << slot;
+      const int side = 2 * k + (upper ? 0 : 1);
+      const int slot = 14 * b + side;
+      if (known[i][b] & (1u << side)) return values[i][slot];
+      known[i][b] = static_cast<std::uint16_t>(known[i][b] | (1u << side));
       ++counters.supportQueries;
       const BvhNode<S>& node = bvh->node(i);
-      const Vector3<S>& d = frame[end].direction[k];
+      const Vector3<S>& d = bank[b].frame.direction[k];
       const Vector3<S> direction = upper ? d : Vector3<S>(-d);
-      S v = d.dot(node.hull.support(direction, hints[i][slot])) + frame[end].offset[k];
+      S v = d.dot(node.hull.support(direction, hints[i][slot])) + bank[b].frame.offset[k];
       if (!node.isLeaf()) {
-        const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + reach);
+        const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + bank[b].reach);
         v += upper ? pad : -pad;
       }
       values[i][slot] = v;
@@ -218,15 +231,34 @@ class BodyPairQuery {
     }
     S acceleration(int i) const { return bound.pointAcceleration(bvh->node(i).hull.boundingRadius()); }
 
+    // The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
+    struct Bank {
+      KdopFrame<S> frame;
+      S reach = S(0);
+      unsigned epoch = 0;
+      bool valid = false;
+      bool holds(const KdopFrame<S>& f) const {
+        if (!valid) return false;
+        for (int k = 0; k < Kdop14<S>::kSlabs; ++k)
+          if (f.offset[k] != frame.offset[k] || f.direction[k] != frame.direction[k]) return false;
+        return true;
+      }
+    };
+    void renew(int b, const KdopFrame<S>& f, const Pose<S>& pose) {
+      bank[b].frame = f;
+      bank[b].reach = pose.translation.template lpNorm<1>();
+      bank[b].epoch = ++epochs;
+      bank[b].valid = true;
+    }
+
     const Bvh<S>* bvh;
-    KdopFrame<S> frame[2];
-    bool sameEnds = true;
+    Bank bank[2];
+    int bankOf[2] = {0, 0};
+    unsigned epochs = 0;
     MotionBound<S> bound;
-    S reach = S(0);
-    unsigned stampNow = 0;
     std::vector<std::array<S, 28>> values;
-    std::vector<std::uint32_t> known;
-    std::vector<unsigned> stamp;
+    std::vector<std::array<std::uint16_t, 2>> known;
+    std::vector<std::array<unsigned, 2>> epochOf;
     std::vector<std::array<SupportHint, 28>> hints;
   };
 
