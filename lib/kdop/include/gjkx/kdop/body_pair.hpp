@@ -231,12 +231,17 @@ class BodyPairQuery {
     }
     S acceleration(int i) const { return bound.pointAcceleration(bvh->node(i).hull.boundingRadius()); }
 
-    // The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
+    /// The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
     struct Bank {
+      /// The pose's slab directions and offsets.
       KdopFrame<S> frame;
+      /// \f$\lVert p\rVert_1\f$ of the pose (the inner nodes' round-off allowance).
       S reach = S(0);
+      /// Which computation of the ends is current.
       unsigned epoch = 0;
+      /// False until a pose is set.
       bool valid = false;
+      /// True if the bank holds the ends at the pose of `f` (bit for bit the same frame).
       bool holds(const KdopFrame<S>& f) const {
         if (!valid) return false;
         for (int k = 0; k < Kdop14<S>::kSlabs; ++k)
