@@ -170,6 +170,58 @@ TEST_CASE("body-pair query: bad input names the field", "[kdop][body_pair]") {
   CHECK_THROWS_WITH(BodyPairQuery<double>(a, a, bad), Catch::Contains("bodyPair.tolerance"));
 }
 
+// A random nonconvex closed mesh: a UV sphere whose vertices lie at random radii 0.5..1.5.
+TriangleMesh bumpySphere(std::mt19937& rng, int rings, int segments) {
+  std::uniform_real_distribution<double> radius(0.5, 1.5);
+  TriangleMesh mesh;
+  mesh.source = "bumpy sphere";
+  mesh.vertices.push_back({0, 0, radius(rng)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments, r = radius(rng);
+      mesh.vertices.push_back({r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi), r * std::cos(theta)});
+    }
+  mesh.vertices.push_back({0, 0, -radius(rng)});
+  const int south = static_cast<int>(mesh.vertices.size()) - 1;
+  auto at = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) {
+    mesh.triangles.push_back({0, at(1, j), at(1, j + 1)});
+    mesh.triangles.push_back({south, at(rings - 1, j + 1), at(rings - 1, j)});
+    for (int i = 1; i + 1 < rings; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return mesh;
+}
+
+TEST_CASE("random meshes through HACD: the BVH equals brute force at random poses and over random motions",
+          "[kdop][body_pair][mesh]") {
+  std::mt19937 rng(77);
+  for (int m = 0; m < 3; ++m) {
+    const TriangleMesh a = bumpySphere(rng, 10, 16), b = bumpySphere(rng, 8, 12);
+    validateMesh(a, {true});  // closed, outward: a real solid
+    DecompositionSettings settings;
+    settings.concavity = 20;  // many pieces, a deep tree
+    const Bvh<double> bodyA(decompose(a, settings, "").polytopes<double>());
+    const Bvh<double> bodyB(decompose(b, settings, "").polytopes<double>());
+    CHECK(bodyA.pieces().size() > 3);
+    int kept = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+      const Motion<double> ma = Motion<double>::screw(randomPose<double>(rng, 0.5), randomVector<double>(rng, 1),
+                                                      randomVector<double>(rng, 2));
+      const Motion<double> mb = Motion<double>::constantVelocity(randomPose<double>(rng, 2.5), randomVector<double>(rng, 2));
+      const auto expected = bruteForcePiecePairs(bodyA, ma, bodyB, mb, 0.0, 0.25);
+      REQUIRE(survivingPiecePairs(bodyA, ma, bodyB, mb, 0.0, 0.25).pairs == expected);
+      BodyPairQuery<double> at(bodyA, bodyB);
+      REQUIRE(at.queryAt(ma.pose(0), mb.pose(0)).pairs ==
+              bruteForcePiecePairs(bodyA, Motion<double>::fixed(ma.pose(0)), bodyB, Motion<double>::fixed(mb.pose(0)), 0.0, 0.0));
+      kept += static_cast<int>(expected.size());
+    }
+    CHECK(kept > 0);
+  }
+}
+
 TEST_CASE("a real mesh (Wuson, assimp-testmodels) against itself: BVH equals brute force at random poses",
           "[kdop][body_pair][mesh]") {
   const std::string path = "/usr/share/assimp/models/STL/Wuson.stl";
