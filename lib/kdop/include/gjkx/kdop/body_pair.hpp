@@ -221,6 +221,9 @@ class BodyPairQuery {
       const BvhNode<S>& node = bvh->node(i);
       const Vector3<S>& d = bank[b].frame.direction[k];
       const Vector3<S> direction = upper ? d : Vector3<S>(-d);
+      // After a large turn (`freshStart`), last time's vertex is far from the answer: the
+      // climb starts from the node's table instead (a few steps from anywhere).
+      if (bank[b].freshStart) hints[i][slot] = node.startFor(direction);
       S v = d.dot(node.hull.support(direction, hints[i][slot])) + bank[b].frame.offset[k];
       if (!node.isLeaf()) {
         const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + bank[b].reach);
@@ -241,6 +244,9 @@ class BodyPairQuery {
       unsigned epoch = 0;
       /// False until a pose is set.
       bool valid = false;
+      /// True if the pose turned by more than about 25 degrees since the bank's last pose
+      /// (or has none): its climbs start from the nodes' tables, not from their hints.
+      bool freshStart = true;
       /// True if the bank holds the ends at the pose of `f` (bit for bit the same frame).
       bool holds(const KdopFrame<S>& f) const {
         if (!valid) return false;
@@ -250,6 +256,11 @@ class BodyPairQuery {
       }
     };
     void renew(int b, const KdopFrame<S>& f, const Pose<S>& pose) {
+      // The turn since the bank's last pose: the x, y and z axes seen from the body moved by
+      // less than about 25 degrees each (cos 25 = 0.906) or the hints are stale.
+      bool coherent = bank[b].valid;
+      for (int k = 0; k < 3 && coherent; ++k) coherent = f.direction[k].dot(bank[b].frame.direction[k]) > S(0.906);
+      bank[b].freshStart = !coherent;
       bank[b].frame = f;
       bank[b].reach = pose.translation.template lpNorm<1>();
       bank[b].epoch = ++epochs;

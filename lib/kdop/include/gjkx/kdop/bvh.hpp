@@ -48,8 +48,21 @@ struct BvhNode {
   /// The largest distance of a hull vertex from the hull's centre: the node's size, which
   /// decides which side of a node pair a traversal opens (the larger one).
   S size = S(0);
+  /// Where hill climbing starts for a direction with no useful hint: for each of the 26
+  /// directions \f$(i, j, k) \in \{-1, 0, 1\}^3\f$ (index \f$9(i+1) + 3(j+1) + (k+1)\f$), the hull's
+  /// supporting vertex there (`startFor`).
+  std::array<int, 27> startVertex{};
   /// True for a leaf.
   bool isLeaf() const { return piece >= 0; }
+  /// A good first vertex for a climb along `d`: the supporting vertex of the nearest of the
+  /// 26 directions (each component of d rounded to -1, 0 or 1 relative to the largest,
+  /// at \f$\tan 22.5^\circ\f$). The climb then takes a few steps, not a walk across the hull.
+  int startFor(const Vector3<S>& d) const {
+    const S m = S(0.41421356) * d.cwiseAbs().maxCoeff();
+    int index = 0;
+    for (int i = 0; i < 3; ++i) index = 3 * index + (d[i] > m ? 2 : (d[i] < -m ? 0 : 1));
+    return startVertex[index];
+  }
 };
 
 /// The hierarchy of one body's convex pieces, in the body frame. Shared by every body
@@ -104,6 +117,10 @@ class Bvh {
     node.parent = parent;
     node.depth = depth;
     for (const auto& v : node.hull.vertices()) node.size = std::max(node.size, (v - node.hull.center()).norm());
+    for (int i = 0; i < 27; ++i) {
+      const Vector3<S> d(S(i / 9 - 1), S(i / 3 % 3 - 1), S(i % 3 - 1));
+      node.startVertex[i] = i == 13 ? 0 : node.hull.supportIndexLinearScan(d);
+    }
     if (last - first == 1) node.piece = order[first];
     nodes_.push_back(node);
     if (last - first == 1) return index;
