@@ -20,6 +20,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #ifndef GJKX_MESH_CACHE_DIR
 #define GJKX_MESH_CACHE_DIR "mesh-cache"
 #endif
@@ -54,7 +56,8 @@ std::string hex(std::uint64_t key) {
 // The cache file: a text header, then each piece's hull vertices at full precision
 // (%.17g reads back to the same double), then the partition.
 void writeCache(const std::string& file, const ConvexDecomposition& d) {
-  const std::string temporary = file + ".tmp";
+  // A name of this process's own: two programs filling the cache at once never share one.
+  const std::string temporary = file + ".tmp" + std::to_string(::getpid());
   {
     std::ofstream out(temporary);
     if (!out) return;  // a cache that cannot be written costs only time
