@@ -1,0 +1,446 @@
+/// @file
+/// @brief The body-pair query: which convex piece pairs of two moving nonconvex bodies may
+/// meet over \f$[t_0, t_1]\f$, with generalized front tracking between queries (§6).
+///
+/// Two bodies A and B, each a `Bvh` of convex pieces moving along a `Motion`, span a
+/// *bounding volume test tree* (BVTT): its root is the pair of roots, and a node (a, b)
+/// whose 14-DOPs are not proven apart by the k-DOP extrusion test (`kdop_extrusion.hpp`)
+/// has as children the pairs of the larger node's children with the other node. The
+/// leaves that survive are the piece pairs handed to the time-of-impact solver.
+///
+/// A traversal stops on a *front*: the BVTT nodes proven apart, and the surviving leaf
+/// pairs. **Generalized front tracking** (Ehmann and Lin, "Accurate and fast proximity
+/// queries between polyhedra using convex surface decomposition", 2001) keeps that front
+/// between queries. The next query tests the front only: a node still apart stays; a node
+/// no longer apart is opened where it stands (a fresh traversal below it); and where both
+/// children of a BVTT node are apart, the parent is tested and, if it is apart too, takes
+/// their place (the front climbs back). When the bodies move little from one frame to the
+/// next, the front barely changes and a query costs about its size, not a traversal.
+///
+/// **Same answer as a fresh traversal.** A node's 14-DOP holds its descendants' (exact
+/// support values of a hull that contains theirs, widened by round-off), and the test's
+/// bound grows with the 14-DOP and shrinks with the node's radius, so a node proven apart
+/// proves all its descendants apart. Every leaf pair lies under exactly one front node.
+/// The surviving pairs are therefore those of a fresh traversal, which are those of the
+/// all-pairs test of the pieces (`bruteForcePiecePairs`), and the tests check that they are.
+#pragma once
+
+#include <gjkx/kdop/bvh.hpp>
+#include <gjkx/kdop/kdop_extrusion.hpp>
+#include <gjkx/motion/motion.hpp>
+#include <gjkx/motion/round_off.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace gjkx {
+
+/// A pair of convex pieces (indices into the two bodies' `Bvh::pieces`) that may meet.
+struct PiecePair {
+  /// The piece of body A.
+  int a = -1;
+  /// The piece of body B.
+  int b = -1;
+  /// Equal pieces.
+  bool operator==(const PiecePair& o) const { return a == o.a && b == o.b; }
+  /// Ordered by a, then b (the order of every query's output).
+  bool operator<(const PiecePair& o) const { return a < o.a || (a == o.a && b < o.b); }
+};
+
+/// What a body-pair query did, for a scene's statistics.
+struct BodyPairCounters {
+  /// BVTT nodes tested (pairs of 14-DOPs put to the k-DOP extrusion test).
+  int nodesVisited = 0;
+  /// Support queries run for slab ends (a full 14-DOP is 14; a test that one slab settles needs 4).
+  int supportQueries = 0;
+  /// The size of the front the query ended on.
+  int frontSize = 0;
+  /// Piece pairs that survived.
+  int pairsKept = 0;
+  /// BVTT nodes the front climbed back to.
+  int climbs = 0;
+};
+
+/// The outcome of a body-pair query.
+enum class BodyPairStatus {
+  Disjoint,   ///< every piece pair is proven apart over the interval
+  PairsKept,  ///< some piece pairs survive: `pairs` lists them
+};
+
+/// How a body-pair query tests and what it keeps.
+template <typename S>
+struct BodyPairSettings {
+  /// The extrusion test's variant: `Paper` is exact for linear motion only; `Certified`
+  /// (the default) stays conservative for rotating and accelerating motion and equals
+  /// `Paper` for linear motion.
+  ExtrusionVariant variant = ExtrusionVariant::Certified;
+  /// A pair is pruned only if a slab keeps it more than this apart (world units, >= 0).
+  S tolerance = S(0);
+  /// Keep the front between queries (generalized front tracking); off: every query is a fresh traversal.
+  bool frontTracking = true;
+  /// Throws std::invalid_argument naming the field for a negative or non-finite tolerance.
+  void validate() const { requireNonNegative(tolerance, "bodyPair.tolerance"); }
+};
+
+/// The answer of a body-pair query.
+template <typename S>
+struct BodyPairOutput {
+  /// Disjoint, or pairs kept.
+  BodyPairStatus status = BodyPairStatus::Disjoint;
+  /// The piece pairs that survive, sorted (`PiecePair::operator<`), ready for the time-of-impact solver.
+  std::vector<PiecePair> pairs;
+  /// Nodes visited, front size, pairs kept.
+  BodyPairCounters counters;
+};
+
+/// The body-pair query of two bodies' piece hierarchies, keeping the front of its BVTT
+/// between calls (see the file comment). One object per pair of bodies; the hierarchies
+/// must outlive it. Not thread safe (it keeps per-body caches of 14-DOPs).
+template <typename S>
+class BodyPairQuery {
+ public:
+  /// A node of the front: a BVTT node (a node of A's hierarchy, a node of B's) and its
+  /// last verdict.
+  struct FrontNode {
+    /// Node of A's `Bvh`.
+    int a;
+    /// Node of B's `Bvh`.
+    int b;
+    /// True if the last query proved it apart; false for a surviving leaf pair.
+    bool disjoint;
+    /// The slab side that proved it apart (2k for "B above A" along slab k, 2k + 1 for
+    /// "A above B"), tried first next time; -1 if none.
+    int slab;
+    /// The BVTT parent (A's node in the high 32 bits, B's in the low), `kNoParent` for the root pair.
+    std::uint64_t parent;
+  };
+  /// The parent of the root pair.
+  static constexpr std::uint64_t kNoParent = ~std::uint64_t(0);
+
+  /// A query over the hierarchies of A and B. Throws std::invalid_argument for bad settings.
+  BodyPairQuery(const Bvh<S>& a, const Bvh<S>& b, BodyPairSettings<S> settings = {})
+      : settings_(settings), bodyA_(a), bodyB_(b) {
+    settings_.validate();
+  }
+
+  /// The piece pairs of A (moving along `motionA`) and B (along `motionB`) that the k-DOP
+  /// extrusion test cannot prove apart over \f$[t_0, t_1]\f$. Throws std::invalid_argument
+  /// ("bodyPair.t0"/"bodyPair.t1") for a non-finite time or t1 < t0.
+  BodyPairOutput<S> query(const Motion<S>& motionA, const Motion<S>& motionB, S t0, S t1) {
+    requireInterval(t0, t1, "bodyPair");
+    ++stamp_;
+    bodyA_.begin(motionA, t0, t1);
+    bodyB_.begin(motionB, t0, t1);
+    duration_ = t1 - t0;
+    BodyPairOutput<S> out;
+    counters_ = &out.counters;
+    if (!settings_.frontTracking || front_.empty()) {
+      front_.assign(1, FrontNode{Bvh<S>::root(), Bvh<S>::root(), false, -1, kNoParent});
+      if (!settings_.frontTracking) parentOf_.clear();
+    }
+    std::vector<FrontNode> next;
+    next.reserve(front_.size() + 16);
+    for (const FrontNode& node : front_) descend(node, next, out.pairs);
+    if (settings_.frontTracking) climb(next);
+    front_ = std::move(next);
+    std::sort(out.pairs.begin(), out.pairs.end());
+    out.counters.frontSize = static_cast<int>(front_.size());
+    out.counters.pairsKept = static_cast<int>(out.pairs.size());
+    out.status = out.pairs.empty() ? BodyPairStatus::Disjoint : BodyPairStatus::PairsKept;
+    counters_ = nullptr;
+    return out;
+  }
+
+  /// The piece pairs whose 14-DOPs overlap with A at `poseA` and B at `poseB` (a static query).
+  BodyPairOutput<S> queryAt(const Pose<S>& poseA, const Pose<S>& poseB) {
+    return query(Motion<S>::fixed(poseA), Motion<S>::fixed(poseB), S(0), S(0));
+  }
+
+  /// The front the last query ended on.
+  const std::vector<FrontNode>& front() const { return front_; }
+  /// Forgets the front: the next query is a fresh traversal.
+  void resetFront() { front_.clear(); }
+  /// The settings.
+  const BodyPairSettings<S>& settings() const { return settings_; }
+
+ private:
+  // One body's pose-dependent state: the slab ends of its nodes' 14-DOPs at t0 and t1,
+  // each computed on demand (one support query, when a test first needs it). They are
+  // kept in two banks, each tied to one pose: a query whose t0 pose is the last query's t1
+  // pose (frames that follow each other) or the same pose again (a body at rest) reads
+  // the ends already computed there. A test that a slab settles reads 4 of a node pair's
+  // 56 ends.
+  struct Body {
+    explicit Body(const Bvh<S>& h)
+        : bvh(&h), values(h.nodes().size()), known(h.nodes().size(), {0, 0}), epochOf(h.nodes().size(), {0, 0}),
+          hints(h.nodes().size()) {
+      for (auto& hint : hints) hint.fill(0);
+    }
+    void begin(const Motion<S>& motion, S t0, S t1) {
+      const Pose<S> pose0 = motion.pose(t0);
+      const KdopFrame<S> frame0 = KdopFrame<S>::of(pose0);
+      const bool sameEnds = (t1 == t0) || motion.isStatic();
+      int b0 = bank[0].holds(frame0) ? 0 : (bank[1].holds(frame0) ? 1 : -1);
+      if (b0 < 0) {
+        b0 = 0;
+        renew(b0, frame0, pose0);
+      }
+      int b1 = b0;
+      if (!sameEnds) {
+        const Pose<S> pose1 = motion.pose(t1);
+        const KdopFrame<S> frame1 = KdopFrame<S>::of(pose1);
+        b1 = 1 - b0;
+        if (!bank[b1].holds(frame1)) renew(b1, frame1, pose1);
+      }
+      bankOf[0] = b0;
+      bankOf[1] = b1;
+      bound = motion.bound();
+    }
+    // Slab end of node i: slab k, upper end (hi_k) or lower (lo_k), at t0 (end 0) or t1.
+    // hi_k = d_k . S(d_k) + a_k . p (bvh.hpp, kdopAt). An inner node's ends are widened by
+    // a few round-offs of their size, so that they hold their descendants' computed ends
+    // (hill climbing on two different hulls may round differently): the BVH then prunes
+    // exactly what the all-pairs test prunes. Support values are at most sqrt(3) r + |p|_1
+    // in size, r the node's radius about the body origin.
+    S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
+      const int b = bankOf[end];
+      if (epochOf[i][b] != bank[b].epoch) {
+        epochOf[i][b] = bank[b].epoch;
+        known[i][b] = 0;
+      }
+      const int side = 2 * k + (upper ? 0 : 1);
+      const int slot = 14 * b + side;
+      if (known[i][b] & (1u << side)) return values[i][slot];
+      known[i][b] = static_cast<std::uint16_t>(known[i][b] | (1u << side));
+      ++counters.supportQueries;
+      const BvhNode<S>& node = bvh->node(i);
+      const Vector3<S>& d = bank[b].frame.direction[k];
+      const Vector3<S> direction = upper ? d : Vector3<S>(-d);
+      // After a large turn (`freshStart`), last time's vertex is far from the answer: the
+      // climb starts from the node's table instead (a few steps from anywhere).
+      if (bank[b].freshStart) hints[i][slot] = node.startFor(direction);
+      S v = d.dot(node.hull.support(direction, hints[i][slot])) + bank[b].frame.offset[k];
+      if (!node.isLeaf()) {
+        const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + bank[b].reach);
+        v += upper ? pad : -pad;
+      }
+      values[i][slot] = v;
+      return v;
+    }
+    S acceleration(int i) const { return bound.pointAcceleration(bvh->node(i).hull.boundingRadius()); }
+
+    /// The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
+    struct Bank {
+      /// The pose's slab directions and offsets.
+      KdopFrame<S> frame;
+      /// \f$\lVert p\rVert_1\f$ of the pose (the inner nodes' round-off allowance).
+      S reach = S(0);
+      /// Which computation of the ends is current.
+      unsigned epoch = 0;
+      /// False until a pose is set.
+      bool valid = false;
+      /// True if the pose turned by more than about 25 degrees since the bank's last pose
+      /// (or has none): its climbs start from the nodes' tables, not from their hints.
+      bool freshStart = true;
+      /// True if the bank holds the ends at the pose of `f` (bit for bit the same frame).
+      bool holds(const KdopFrame<S>& f) const {
+        if (!valid) return false;
+        for (int k = 0; k < Kdop14<S>::kSlabs; ++k)
+          if (f.offset[k] != frame.offset[k] || f.direction[k] != frame.direction[k]) return false;
+        return true;
+      }
+    };
+    void renew(int b, const KdopFrame<S>& f, const Pose<S>& pose) {
+      // The turn since the bank's last pose: the x, y and z axes seen from the body moved by
+      // less than about 25 degrees each (cos 25 = 0.906) or the hints are stale.
+      bool coherent = bank[b].valid;
+      for (int k = 0; k < 3 && coherent; ++k) coherent = f.direction[k].dot(bank[b].frame.direction[k]) > S(0.906);
+      bank[b].freshStart = !coherent;
+      bank[b].frame = f;
+      bank[b].reach = pose.translation.template lpNorm<1>();
+      bank[b].epoch = ++epochs;
+      bank[b].valid = true;
+    }
+
+    const Bvh<S>* bvh;
+    Bank bank[2];
+    int bankOf[2] = {0, 0};
+    unsigned epochs = 0;
+    MotionBound<S> bound;
+    std::vector<std::array<S, 28>> values;
+    std::vector<std::array<std::uint16_t, 2>> known;
+    std::vector<std::array<unsigned, 2>> epochOf;
+    std::vector<std::array<SupportHint, 28>> hints;
+  };
+
+  std::uint64_t key(int a, int b) const {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  }
+
+  // The BVTT's rule: open the larger node (ties: A), never a leaf.
+  bool opensA(int a, int b) const {
+    const BvhNode<S>& na = bodyA_.bvh->node(a);
+    const BvhNode<S>& nb = bodyB_.bvh->node(b);
+    if (na.isLeaf()) return false;
+    if (nb.isLeaf()) return true;
+    return na.size >= nb.size;
+  }
+
+  // Slab side `side` (2k: B above A along slab k; 2k + 1: A above B) over the interval:
+  // the same gaps, in the same arithmetic, as `kdopExtrusionTest`.
+  bool sideSeparates(int a, int b, int side) {
+    const int k = side / 2;
+    const bool bAbove = side % 2 == 0;
+    const S scale = S(1) / Kdop14<S>::axisLength(k);
+    BodyPairCounters& c = *counters_;
+    const auto gap = [&](int end) {
+      return bAbove ? (bodyB_.value(b, k, false, end, c) - bodyA_.value(a, k, true, end, c)) * scale
+                    : (bodyA_.value(a, k, false, end, c) - bodyB_.value(b, k, true, end, c)) * scale;
+    };
+    const S gap0 = gap(0);
+    if (!(gap0 > settings_.tolerance)) return false;  // settled at t0: the t1 ends are not needed
+    return slabSeparatesOverInterval(gap0, gap(1), duration_, bodyA_.acceleration(a), bodyB_.acceleration(b),
+                                     settings_.variant, settings_.tolerance);
+  }
+
+  // The k-DOP extrusion test of BVTT node (a, b): the slab side that proves it apart, or
+  // -1. The side that did last time (`hint`) is tried first: when the bodies move little
+  // it settles the test with 4 support queries.
+  int apart(int a, int b, int hint) {
+    ++counters_->nodesVisited;
+    if (hint >= 0 && sideSeparates(a, b, hint)) return hint;
+    for (int side = 0; side < 2 * Kdop14<S>::kSlabs; ++side)
+      if (side != hint && sideSeparates(a, b, side)) return side;
+    return -1;
+  }
+
+  // Tests BVTT node `start` and everything below it that is not proven apart; the nodes
+  // where it stops go to `front`, the surviving leaf pairs to `pairs`.
+  void descend(const FrontNode& start, std::vector<FrontNode>& front, std::vector<PiecePair>& pairs) {
+    stack_.clear();
+    stack_.push_back(start);
+    while (!stack_.empty()) {
+      const FrontNode n = stack_.back();
+      stack_.pop_back();
+      const int side = apart(n.a, n.b, n.slab);
+      if (side >= 0) {
+        front.push_back({n.a, n.b, true, side, n.parent});
+        continue;
+      }
+      const BvhNode<S>& ni = bodyA_.bvh->node(n.a);
+      const BvhNode<S>& nj = bodyB_.bvh->node(n.b);
+      if (ni.isLeaf() && nj.isLeaf()) {
+        front.push_back({n.a, n.b, false, -1, n.parent});
+        pairs.push_back({ni.piece, nj.piece});
+        continue;
+      }
+      FrontNode first{n.a, n.b, false, n.slab, key(n.a, n.b)}, second = first;
+      if (opensA(n.a, n.b)) {
+        first.a = ni.left;
+        second.a = ni.right;
+      } else {
+        first.b = nj.left;
+        second.b = nj.right;
+      }
+      if (settings_.frontTracking) parentOf_.emplace(key(n.a, n.b), n.parent);  // for when the front climbs to it
+      stack_.push_back(second);
+      stack_.push_back(first);
+    }
+  }
+
+  // The front climbs back: where both children of a BVTT node are on the front and apart,
+  // the node itself is tested, and if it is apart it replaces them; a node that climbed
+  // may climb again. Two children of one node that are both on the front are neighbours in
+  // it (a descent writes the first child's sub-front, then the second's, and later queries
+  // keep that order), so one pass with a stack finds them, no search. A parent found not
+  // apart is not tried again for a few queries (`kClimbRetry`): climbing is an economy,
+  // never needed for the answer.
+  void climb(std::vector<FrontNode>& front) {
+    static constexpr unsigned kClimbRetry = 8;
+    std::vector<FrontNode>& out = climbed_;
+    out.clear();
+    for (const FrontNode& node : front) {
+      out.push_back(node);
+      while (out.size() >= 2) {
+        const FrontNode& x = out[out.size() - 2];
+        const FrontNode& y = out.back();
+        if (!x.disjoint || !y.disjoint || x.parent != y.parent || x.parent == kNoParent) break;
+        const std::uint64_t parent = x.parent;
+        const auto failed = climbFailed_.find(parent);
+        if (failed != climbFailed_.end() && stamp_ - failed->second < kClimbRetry) break;
+        const int pa = static_cast<int>(parent >> 32), pb = static_cast<int>(parent & 0xffffffffu);
+        const int side = apart(pa, pb, x.slab);
+        if (side < 0) {
+          climbFailed_[parent] = stamp_;
+          break;
+        }
+        const auto grand = parentOf_.find(parent);
+        out.pop_back();
+        out.pop_back();
+        out.push_back({pa, pb, true, side, grand == parentOf_.end() ? kNoParent : grand->second});
+        ++counters_->climbs;
+      }
+    }
+    front.swap(out);
+  }
+
+  BodyPairSettings<S> settings_;
+  Body bodyA_, bodyB_;
+  S duration_ = S(0);
+  unsigned stamp_ = 0;
+  std::vector<FrontNode> front_;
+  std::unordered_map<std::uint64_t, std::uint64_t> parentOf_;
+  std::unordered_map<std::uint64_t, unsigned> climbFailed_;
+  std::vector<FrontNode> stack_, climbed_;
+  BodyPairCounters* counters_ = nullptr;
+};
+
+/// The piece pairs of A and B that may meet over \f$[t_0, t_1]\f$: one fresh traversal
+/// (`BodyPairQuery` without a kept front). For the simulation: the two bodies' piece
+/// sets, their motions and the interval in, the surviving pairs out.
+template <typename S>
+BodyPairOutput<S> survivingPiecePairs(const Bvh<S>& a, const Motion<S>& motionA, const Bvh<S>& b,
+                                      const Motion<S>& motionB, S t0, S t1, BodyPairSettings<S> settings = {}) {
+  settings.frontTracking = false;
+  BodyPairQuery<S> query(a, b, settings);
+  return query.query(motionA, motionB, t0, t1);
+}
+
+/// The reference the hierarchy is held to: every piece of A against every piece of B with
+/// the same k-DOP extrusion test, no hierarchy. Sorted like a query's output.
+template <typename S>
+std::vector<PiecePair> bruteForcePiecePairs(const Bvh<S>& a, const Motion<S>& motionA, const Bvh<S>& b,
+                                            const Motion<S>& motionB, S t0, S t1, BodyPairSettings<S> settings = {}) {
+  requireInterval(t0, t1, "bodyPair");
+  settings.validate();
+  auto ends = [&](const Bvh<S>& bvh, const Motion<S>& motion) {
+    const KdopFrame<S> f0 = KdopFrame<S>::of(motion.pose(t0)), f1 = KdopFrame<S>::of(motion.pose(t1));
+    std::vector<std::pair<Kdop14<S>, Kdop14<S>>> k;
+    for (const auto& piece : bvh.pieces()) {
+      std::array<SupportHint, 14> h0, h1;
+      h0.fill(0);
+      h1.fill(0);
+      k.push_back({kdopAt(piece, f0, h0), kdopAt(piece, f1, h1)});
+    }
+    return k;
+  };
+  const auto ka = ends(a, motionA), kb = ends(b, motionB);
+  const MotionBound<S> boundA = motionA.bound(), boundB = motionB.bound();
+  std::vector<PiecePair> pairs;
+  for (int i = 0; i < static_cast<int>(ka.size()); ++i)
+    for (int j = 0; j < static_cast<int>(kb.size()); ++j)
+      if (!kdopExtrusionTest(ka[i].first, ka[i].second, kb[j].first, kb[j].second, t1 - t0,
+                             boundA.pointAcceleration(a.pieces()[i].boundingRadius()),
+                             boundB.pointAcceleration(b.pieces()[j].boundingRadius()), settings.variant,
+                             settings.tolerance)
+               .separated)
+        pairs.push_back({i, j});
+  return pairs;
+}
+
+}  // namespace gjkx
