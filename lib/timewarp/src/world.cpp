@@ -43,6 +43,7 @@ struct World::FrameState {
   FrameReport report;
   std::vector<std::vector<Piece>> pieces;           // per body, the paths of this frame in order
   std::vector<std::pair<int, int>> collidedPairs;   // pairs with a collision reported this frame
+  std::vector<Bounds> boxes;                         // Timewarp: each body's swept bounds to the frame's end
 };
 
 namespace {
@@ -104,6 +105,13 @@ double microcollisionSpeed(double gravity, double tolerance) { return std::sqrt(
 BodyState renormalized(BodyState state) {
   state.worldFromBody.rotation = Eigen::Quaterniond(state.worldFromBody.rotation).normalized().toRotationMatrix();
   return state;
+}
+
+/// The unit direction from i's centre of mass to j's (up, +z, when they coincide): the
+/// normal of a first contact whose closest points coincide.
+Eigen::Vector3d centreToCentre(const BodyState& si, const BodyState& sj) {
+  const Eigen::Vector3d d = sj.worldFromBody.translation - si.worldFromBody.translation;
+  return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitZ();
 }
 
 std::string bodyField(const BodySpec& body, std::size_t index, const std::string& field) {
@@ -369,12 +377,11 @@ bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit
     // The normal is the direction between the closest points; when they (nearly) coincide,
     // the bodies touch or overlap and that direction is round-off: the pair's last
     // reliable normal is used instead, or, for a first contact, centre to centre.
-    Eigen::Vector3d& known = pairNormal_[pairSlot(i, j)];
+    Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
     if (r.distance > 1e-2 * scene_.collisionTolerance && hit.normal.squaredNorm() > 0.5) {
       known = hit.normal;
     } else {
-      hit.normal = known.squaredNorm() > 0.5 ? known
-                                             : Eigen::Vector3d(sj.worldFromBody.translation - si.worldFromBody.translation).normalized();
+      hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
     }
     const double vn = approachAt(hit, si, sj, frame);
     if (vn < 0) return true;  // approaching: a collision
@@ -439,6 +446,33 @@ void World::runTimewarp(double T0, double T1, FrameState& frame) {
     for (const auto& [i, j] : candidatePairs(T0, T1, frame))
       if (checkPair(i, j, T0, T1, frame, hit)) queue.push(hit);
   }
+  // The swept bounds stay valid for every body a collision leaves alone: only the two
+  // bodies of a collision get new ones (from t_c), and only their pairs are looked at.
+  {
+    PartTimer timer(frame.report.parts.bounds);
+    frame.boxes.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      frame.boxes[b] = sweptBounds(int(b), T0, T1);
+      frame.boxes[b].inflate(scene_.collisionTolerance);
+    }
+  }
+  auto pairsOf = [&](int i, int j, double tc) {
+    PartTimer timer(frame.report.parts.bounds);
+    for (int b : {i, j}) {
+      frame.boxes[b] = sweptBounds(b, tc, T1);
+      frame.boxes[b].inflate(scene_.collisionTolerance);
+    }
+    std::vector<std::pair<int, int>> pairs;
+    for (int b : {i, j}) {
+      if (bodies_[b].rigid.isStatic()) continue;
+      for (int k = 0; k < int(bodies_.size()); ++k)
+        if (k != b && !(b == j && k == i) && frame.boxes[b].overlaps(frame.boxes[k]))
+          pairs.emplace_back(std::min(b, k), std::max(b, k));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+  };
   FrameCounters& c = frame.report.counters;
   const long cap = 200000 + 1000 * long(bodies_.size());
   while (!queue.empty()) {
@@ -458,7 +492,7 @@ void World::runTimewarp(double T0, double T1, FrameState& frame) {
     resolve(hit, frame);
     // ... and re-checks only the pairs that touch them, from t_c on.
     Hit next;
-    for (const auto& [i, j] : candidatePairs(hit.time, T1, frame, hit.i, hit.j))
+    for (const auto& [i, j] : pairsOf(hit.i, hit.j, hit.time))
       if (checkPair(i, j, hit.time, T1, frame, next)) queue.push(next);
   }
 }
@@ -519,24 +553,24 @@ void World::runFixedStep(double T0, double T1, FrameState& frame) {
                   Placed<Shape<double>>{bodies_[j].shape, sj.worldFromBody});
         }
       }
-      Eigen::Vector3d& known = pairNormal_[pairSlot(i, j)];
+      Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
       const bool touching = g.status == GjkStatus::Overlapping || g.distance <= scene_.collisionTolerance;
       if (!touching) {
-        known = (g.witnessQ - g.witnessP).normalized();
+        const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+        if (z.norm() > 1e-2 * scene_.collisionTolerance) known = z.normalized();
         continue;
       }
       Hit hit;
       hit.time = tb;
       hit.i = i;
       hit.j = j;
-      if (g.status != GjkStatus::Overlapping && g.distance > 1e-2 * scene_.collisionTolerance) {
-        hit.normal = (g.witnessQ - g.witnessP).normalized();
+      const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+      if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
+        hit.normal = z.normalized();
         hit.pointI = g.witnessP;
         hit.pointJ = g.witnessQ;
       } else {  // interpenetrating: the last normal seen, or centre to centre
-        hit.normal = known.squaredNorm() > 0.5
-                         ? known
-                         : Eigen::Vector3d(sj.worldFromBody.translation - si.worldFromBody.translation).normalized();
+        hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
         hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
       }
       if (approachAt(hit, si, sj, frame) >= 0) continue;
