@@ -1,0 +1,180 @@
+/// @file
+/// @brief The world: bodies in free flight, their collisions found by the paper's solver (§5)
+/// and resolved in the right order by Mirtich's Timewarp, or by the two orderings it is compared with (§6).
+///
+/// §5: "The extrusion solver [...] returns either 'no collision' or the time of impact for a
+/// whole interval [...] used in a rigid-body simulation with Mirtich's Timewarp algorithm."
+/// Each frame [T0, T1] of 1/24 s (the paper's frames):
+/// - every moving body is flown to T1 on its own (`freeFlight`): its *local time* runs
+///   ahead to the frame's end, its path a motion the solver can query;
+/// - the broad phase (broad_phase.hpp) keeps the pairs whose swept bounds overlap, and the
+///   paper's extrusion + Brent solver checks each over the interval since it was last known
+///   disjoint; a hit is a *collision event* in one queue ordered by time;
+/// - **Timewarp** (Mirtich, SIGGRAPH 2000) takes the earliest event, *rolls back* only its
+///   two bodies to the time of impact t_c (their histories cut at t_c), applies the impulse
+///   (impulse.hpp), flies them on to T1, and re-checks only the pairs that touch them: every
+///   other event stays valid, and the events that used the rolled-back paths after t_c
+///   are dropped (their bodies' *versions* changed). The frame is final once the queue is
+///   empty: the global virtual time has passed it, and the history before it is discarded;
+/// - the **time-of-impact heap** (what a user would otherwise pick) advances *every* body to
+///   the earliest impact, resolves it, and checks every pair again from there;
+/// - **fixed steps** fly every body a fixed step and test the pairs statically at its end
+///   (discrete collision detection, which can tunnel).
+///
+/// Contacts within the tolerance that are already moving apart are not collisions: the
+/// pair's check starts again once they have had time to leave the tolerance band. Resting
+/// contact is a train of *microcollisions* (impulse.hpp).
+#pragma once
+
+#include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/dynamics/free_flight.hpp>
+#include <gjkx/dynamics/impulse.hpp>
+#include <gjkx/dynamics/rigid_body.hpp>
+#include <gjkx/support_mapping/shape.hpp>
+#include <gjkx/timewarp/broad_phase.hpp>
+#include <gjkx/timewarp/scene.hpp>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gjkx {
+
+/// Settings of the world that are not part of a scene (they choose how, not what).
+struct WorldSettings {
+  /// The extrusion test of the solver: the paper's or the certified one (never misses
+  /// under rotation; gjkx/extrusion/certified_margin.hpp). The default is certified.
+  ExtrusionVariant variant = ExtrusionVariant::Certified;
+  /// Run the independent checks (penetration at each frame's end, tunnelling by dense sampling).
+  bool checks = true;
+  /// Record what the orderings did, event by event (chapter 07 draws it).
+  bool trace = false;
+};
+
+/// What happened in one frame (a row of frames.csv).
+struct FrameCounters {
+  long events = 0;              ///< events taken from the queue (stale ones included)
+  long collisionChecks = 0;     ///< pair queries of the time-of-impact solver (or static tests)
+  long collisions = 0;          ///< impulses applied (microcollisions included)
+  long microcollisions = 0;     ///< of which microcollisions
+  long rollbacks = 0;           ///< collisions that rolled back bodies whose local time had run past t_c
+  long bodiesRolledBack = 0;    ///< bodies rolled back (or, for the heap, advanced to the impact)
+  long brentQueries = 0;        ///< queries whose first extrusion test failed, so that Brent ran (§5)
+  long brentIterations = 0;     ///< Brent iterates of every query
+  int brentMax = 0;             ///< the most of one query
+  long photoFinishes = 0;       ///< queries that ended in a photo finish (§5)
+  long completeTests = 0;       ///< complete extrusion tests (one per query plus restarts)
+  long solverCaps = 0;          ///< queries that ran out of iterations (treated as collisions)
+  double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
+  int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported
+};
+
+/// Wall time of a frame by part (seconds), as Fig. 6 of the paper splits it.
+struct PartTimes {
+  double integration = 0;         ///< free flight (odeint for turning bodies)
+  double bounds = 0;              ///< swept bounds and the broad phase
+  double collisionDetection = 0;  ///< the time-of-impact solver (or the static tests)
+  double impulses = 0;            ///< contact points and Mirtich's impulses
+  double ordering = 0;            ///< the event queue, rollbacks, bookkeeping
+  double checks = 0;              ///< the independent checks (not part of the method)
+};
+
+/// One frame's report.
+struct FrameReport {
+  int frame = 0;              ///< 1, 2, ...
+  double time = 0;            ///< simulated time at the frame's end
+  double wallSeconds = 0;     ///< wall time spent on the frame
+  FrameCounters counters;     ///< what happened
+  PartTimes parts;            ///< where the wall time went
+};
+
+/// One record of the trace (WorldSettings::trace): what an ordering did to a body's local time.
+struct TraceEvent {
+  /// What happened.
+  enum class Kind {
+    Advance,    ///< the body flew from `from` to `to` (its local time now `to`)
+    Collision,  ///< a collision at `to` between `body` and `other`
+    Rollback,   ///< the body's local time went back from `from` to `to`
+    Check,      ///< a pair check over [from, to] between `body` and `other`
+  };
+  Kind kind = Kind::Advance;  ///< what happened
+  int body = -1;              ///< the body
+  int other = -1;             ///< the other body of a pair, or -1
+  double from = 0;            ///< time before / interval start
+  double to = 0;              ///< time after / interval end
+};
+
+/// A body of the world: its shape about its centre of mass, its mass, its path.
+struct WorldBody {
+  std::string name;                 ///< its name in the scene
+  Shape<double> shape;              ///< its shape, body frame at the centre of mass
+  Shape<float> shapeFloat;          ///< the same in float (collision detection in float)
+  Eigen::Vector3d frameOrigin;      ///< the scene's shape frame origin, in the body frame (minus the centre of mass)
+  RigidBody rigid;                  ///< mass properties (or static)
+  double radius = 0;                ///< bounding radius about the centre of mass
+  FreeFlight path;                  ///< its path from its last event to its local time `path.t1`
+  int version = 0;                  ///< bumped when its path changes: events that used the old one are stale
+};
+
+/// The world of a scene, run frame by frame.
+class World {
+ public:
+  /// Builds the bodies of `scene` (mass properties, shapes about the centre of mass) and
+  /// checks them: two bodies overlapping at the start (one of them not static) is an
+  /// error naming both. Throws std::invalid_argument.
+  explicit World(const Scene& scene, const WorldSettings& settings = {});
+
+  /// Runs one frame and reports it.
+  FrameReport step();
+  /// True once the scene's duration is simulated.
+  bool done() const { return frame_ >= frameCount_; }
+  /// Frames in the scene's duration.
+  int frameCount() const { return frameCount_; }
+  /// Simulated time.
+  double time() const { return double(frame_) / scene_.frameRate; }
+  /// The bodies.
+  const std::vector<WorldBody>& bodies() const { return bodies_; }
+  /// A body's state now (at `time()`).
+  BodyState stateOf(int body) const { return bodies_[body].path.stateAt(time()); }
+  /// Where the origin of a body's scene frame is now (the position as the scene file gives it).
+  Eigen::Vector3d positionOf(int body) const;
+  /// The scene.
+  const Scene& scene() const { return scene_; }
+  /// The trace of every frame so far (empty unless WorldSettings::trace).
+  const std::vector<TraceEvent>& trace() const { return trace_; }
+  /// The collisions of every frame so far: (time, body, other).
+  const std::vector<std::array<double, 3>>& collisionLog() const { return collisionLog_; }
+
+ private:
+  struct Hit;
+  struct FrameState;
+  void flyAll(double t0, double t1, FrameState& frame);
+  void fly(int body, double t0, double t1, FrameState& frame);
+  Bounds sweptBounds(int body, double t0, double t1) const;
+  Bounds sweptBounds(int body, const FreeFlight& path, double t0, double t1) const;
+  double approachAt(Hit& hit, const BodyState& si, const BodyState& sj, FrameState& frame) const;
+  std::vector<std::pair<int, int>> candidatePairs(double t0, double t1, FrameState& frame, int only = -1,
+                                                  int also = -1);
+  bool checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit& hit);
+  void resolve(const Hit& hit, FrameState& frame);
+  void runTimewarp(double T0, double T1, FrameState& frame);
+  void runToiHeap(double T0, double T1, FrameState& frame);
+  void runFixedStep(double T0, double T1, FrameState& frame);
+  void runChecks(double T0, double T1, FrameState& frame);
+  double speedBound(int body, const FrameState& frame) const;
+
+  Scene scene_;
+  WorldSettings settings_;
+  std::vector<WorldBody> bodies_;
+  ImpulseSettings impulse_;
+  int frame_ = 0;
+  int frameCount_ = 0;
+  std::vector<TraceEvent> trace_;
+  std::vector<std::array<double, 3>> collisionLog_;
+  /// Per body pair, the last reliable contact normal (see checkPair).
+  std::map<long long, Eigen::Vector3d> pairNormal_;
+  long long pairSlot(int i, int j) const { return (long long)(i) * (long long)(bodies_.size()) + j; }
+};
+
+}  // namespace gjkx

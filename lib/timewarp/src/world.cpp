@@ -1,0 +1,666 @@
+// The world and its three orderings (world.hpp). Read runTimewarp first: it is the
+// paper's ordering; runToiHeap and runFixedStep are what it is compared with.
+#include <gjkx/timewarp/world.hpp>
+
+#include <gjkx/dynamics/mass_properties.hpp>
+#include <gjkx/gjk/gjk.hpp>
+#include <gjkx/timewarp/checks.hpp>
+#include <gjkx/timewarp/contact.hpp>
+#include <gjkx/timewarp/motion_cast.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+
+namespace gjkx {
+
+// ---------------------------------------------------------------------------------------
+// What a frame keeps while it runs
+
+/// A collision found by a pair check: when, between which bodies, and the contact data.
+/// The versions say which paths it was computed on: once a body's path changes, the
+/// event is stale (Timewarp's "events that used them after t_c").
+struct World::Hit {
+  double time = 0;
+  int i = -1, j = -1;
+  int versionI = 0, versionJ = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, from i towards j
+  Eigen::Vector3d pointI = Eigen::Vector3d::Zero(), pointJ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d contact = Eigen::Vector3d::Zero();  // where the impulse acts (contact.hpp)
+  /// The queue pops the earliest first; ties by the pair, so every run takes the same order.
+  bool operator>(const Hit& o) const { return std::tie(time, i, j) > std::tie(o.time, o.i, o.j); }
+};
+
+/// A piece of a body's path within the frame: `path` flown from path.t0, used until `end`.
+struct Piece {
+  FreeFlight path;
+  double end;
+};
+
+struct World::FrameState {
+  FrameReport report;
+  std::vector<std::vector<Piece>> pieces;           // per body, the paths of this frame in order
+  std::vector<std::pair<int, int>> collidedPairs;   // pairs with a collision reported this frame
+  std::vector<Bounds> boxes;                         // Timewarp: each body's swept bounds to the frame's end
+};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Adds the wall time of a scope to one part of the frame's split (Fig. 6).
+class PartTimer {
+ public:
+  explicit PartTimer(double& part) : part_(part), start_(Clock::now()) {}
+  ~PartTimer() { part_ += std::chrono::duration<double>(Clock::now() - start_).count(); }
+  PartTimer(const PartTimer&) = delete;
+  PartTimer& operator=(const PartTimer&) = delete;
+
+ private:
+  double& part_;
+  Clock::time_point start_;
+};
+
+/// The shape of a body spec, in its scene frame (before moving the origin to the centre of mass).
+Shape<double> shapeOf(const ShapeSpec& spec, const std::vector<Eigen::Vector3d>& shiftedPoints) {
+  switch (spec.kind) {
+    case ShapeSpec::Kind::Box: return Box<double>(spec.halfExtents);
+    case ShapeSpec::Kind::Sphere: return Sphere<double>(spec.radius);
+    case ShapeSpec::Kind::Capsule:
+      return Capsule<double>(Eigen::Vector3d(0, 0, -spec.halfLength), Eigen::Vector3d(0, 0, spec.halfLength),
+                             spec.radius);
+    case ShapeSpec::Kind::Polytope: return Polytope<double>::hull(shiftedPoints);
+    case ShapeSpec::Kind::Mesh: break;
+  }
+  throw std::invalid_argument("mesh shapes are not supported by this world yet");
+}
+
+Shape<float> floatShapeOf(const ShapeSpec& spec, const std::vector<Eigen::Vector3d>& shiftedPoints) {
+  switch (spec.kind) {
+    case ShapeSpec::Kind::Box: return Box<float>(spec.halfExtents.cast<float>());
+    case ShapeSpec::Kind::Sphere: return Sphere<float>(float(spec.radius));
+    case ShapeSpec::Kind::Capsule:
+      return Capsule<float>(Eigen::Vector3f(0, 0, -float(spec.halfLength)), Eigen::Vector3f(0, 0, float(spec.halfLength)),
+                            float(spec.radius));
+    case ShapeSpec::Kind::Polytope: {
+      std::vector<Eigen::Vector3f> points;
+      for (const auto& p : shiftedPoints) points.push_back(p.cast<float>());
+      return Polytope<float>::hull(points);
+    }
+    case ShapeSpec::Kind::Mesh: break;
+  }
+  throw std::invalid_argument("mesh shapes are not supported by this world yet");
+}
+
+/// Mirtich's microcollisions: a resting body is a train of tiny bounces. A contact that
+/// approaches slower than a body gains falling through the collision tolerance band,
+/// sqrt(2 |g| tol), bounces out of it at that speed (to a height of one tolerance), so it
+/// neither sinks into the other body nor collides endlessly. Without gravity: none.
+double microcollisionSpeed(double gravity, double tolerance) { return std::sqrt(2 * gravity * tolerance); }
+
+/// A state whose rotation is made orthonormal again: a body flown from state to state
+/// thousands of times (fixed steps) would otherwise gather round-off in its rotation.
+BodyState renormalized(BodyState state) {
+  state.worldFromBody.rotation = Eigen::Quaterniond(state.worldFromBody.rotation).normalized().toRotationMatrix();
+  return state;
+}
+
+/// The unit direction from i's centre of mass to j's (up, +z, when they coincide): the
+/// normal of a first contact whose closest points coincide.
+Eigen::Vector3d centreToCentre(const BodyState& si, const BodyState& sj) {
+  const Eigen::Vector3d d = sj.worldFromBody.translation - si.worldFromBody.translation;
+  return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+std::string bodyField(const BodySpec& body, std::size_t index, const std::string& field) {
+  return "body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Building the world
+
+World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene), settings_(settings) {
+  frameCount_ = std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9)));
+  impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
+  for (std::size_t index = 0; index < scene.bodies.size(); ++index) {
+    const BodySpec& spec = scene.bodies[index];
+    if (spec.shape.kind == ShapeSpec::Kind::Mesh)
+      throw std::invalid_argument(bodyField(spec, index, "shape.mesh") +
+                                  " needs the nonconvex (kdop) stage, which this world does not use yet");
+    // The body frame is put at the centre of mass: free flight turns a body about it.
+    Eigen::Vector3d centerOfMass = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> points = spec.shape.points;
+    MassProperties mass{};
+    try {
+      const Shape<double> sceneShape = shapeOf(spec.shape, points);
+      if (!spec.isStatic) {
+        mass = massProperties(sceneShape, spec.density);
+        centerOfMass = mass.centerOfMass;
+        mass.centerOfMass = Eigen::Vector3d::Zero();
+      }
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(bodyField(spec, index, "shape") + ": " + e.what());
+    }
+    for (auto& p : points) p -= centerOfMass;
+    WorldBody body{spec.name,
+                   shapeOf(spec.shape, points),
+                   floatShapeOf(spec.shape, points),
+                   -centerOfMass,
+                   spec.isStatic ? RigidBody::fixed() : RigidBody::dynamic(mass),
+                   0,
+                   FreeFlight{},
+                   0};
+    body.radius = body.shape.boundingRadius();
+    BodyState start;
+    start.worldFromBody.rotation = spec.orientation.toRotationMatrix();
+    start.worldFromBody.translation = spec.position + start.worldFromBody.rotation * centerOfMass;
+    start.velocity = spec.velocity;
+    start.angularVelocity = spec.angularVelocity;
+    // A static body is flown once, over the whole run: it is never integrated again.
+    const double end = spec.isStatic ? double(frameCount_) / scene.frameRate : 0.0;
+    body.path = freeFlight(body.rigid, start, 0.0, end, scene.gravity);
+    bodies_.push_back(std::move(body));
+  }
+  // Two bodies overlapping at the start are an error (static ones may meet: walls of a box).
+  std::vector<Bounds> boxes;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    Bounds b;
+    b.add(bodies_[i].path.start.worldFromBody.translation);
+    b.inflate(bodies_[i].radius + scene.collisionTolerance);
+    boxes.push_back(b);
+  }
+  const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic(); });
+  for (const auto& [i, j] : pairs) {
+    const double d = referenceSignedDistance(bodies_[i], bodies_[i].path.start.worldFromBody, bodies_[j],
+                                             bodies_[j].path.start.worldFromBody);
+    if (d < -scene.collisionTolerance)
+      throw std::invalid_argument(scene.bodies[i].name.empty() ? "" :
+                                  "body '" + bodies_[i].name + "' (bodies[" + std::to_string(i) + "]) and body '" +
+                                      bodies_[j].name + "' (bodies[" + std::to_string(j) +
+                                      "]): field 'position' puts them overlapping at the start (by " +
+                                      std::to_string(-d) + ")");
+  }
+}
+
+Eigen::Vector3d World::positionOf(int body) const {
+  const Pose<double> pose = stateOf(body).worldFromBody;
+  return pose(bodies_[body].frameOrigin);
+}
+
+// ---------------------------------------------------------------------------------------
+// Free flight and the broad phase
+
+void World::fly(int b, double t0, double t1, FrameState& frame) {
+  WorldBody& body = bodies_[b];
+  const BodyState state = renormalized(body.path.stateAt(t0));
+  {
+    PartTimer timer(frame.report.parts.integration);
+    body.path = freeFlight(body.rigid, state, t0, t1, scene_.gravity);
+  }
+  ++body.version;
+  auto& pieces = frame.pieces[b];
+  if (!pieces.empty() && pieces.back().end > t0) pieces.back().end = t0;  // cut at t0 (a rollback)
+  pieces.push_back({body.path, t1});
+  if (settings_.trace) trace_.push_back({TraceEvent::Kind::Advance, b, -1, t0, t1});
+}
+
+void World::flyAll(double t0, double t1, FrameState& frame) {
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].rigid.isStatic()) continue;  // never integrated
+    const FreeFlight& path = bodies_[b].path;
+    if (path.t0 == t0 && path.t1 >= t1) {        // already flown from here (after an impulse at t0)
+      if (frame.pieces[b].empty()) frame.pieces[b].push_back({path, t1});
+      continue;
+    }
+    fly(int(b), t0, t1, frame);
+  }
+}
+
+Bounds World::sweptBounds(int b, double t0, double t1) const { return sweptBounds(b, bodies_[b].path, t0, t1); }
+
+Bounds World::sweptBounds(int b, const FreeFlight& path, double t0, double t1) const {
+  const WorldBody& body = bodies_[b];
+  Bounds box;
+  const BodyState a = path.stateAt(t0), z = path.stateAt(t1);
+  const bool turning = path.start.angularVelocity.squaredNorm() > 0;
+  if (turning || body.rigid.isStatic()) {
+    // Every orientation may occur: the sphere about the centre of mass.
+    box.add(a.worldFromBody.translation);
+    box.add(z.worldFromBody.translation);
+    if (body.rigid.isStatic()) {
+      // A static body's box is tight: its support along each axis.
+      Bounds tight;
+      const Placed<Shape<double>> placed{body.shape, a.worldFromBody};
+      for (int k = 0; k < 3; ++k) {
+        Eigen::Vector3d e = Eigen::Vector3d::Zero();
+        e[k] = 1;
+        tight.hi[k] = placed.support(e)[k];
+        tight.lo[k] = placed.support(-e)[k];
+      }
+      return tight;
+    }
+    box.inflate(body.radius);
+  } else {
+    // Not turning: the shape's own box at both ends (the box moves with the centre of mass).
+    for (const BodyState* s : {&a, &z}) {
+      const Placed<Shape<double>> placed{body.shape, s->worldFromBody};
+      for (int k = 0; k < 3; ++k) {
+        Eigen::Vector3d e = Eigen::Vector3d::Zero();
+        e[k] = 1;
+        box.add(Eigen::Vector3d(placed.support(e)));
+        box.add(Eigen::Vector3d(placed.support(-e)));
+      }
+    }
+  }
+  // The ballistic bulge of the path off its chord: |g| T^2 / 8.
+  const double T = t1 - t0;
+  box.inflate(scene_.gravity.norm() * T * T / 8);
+  return box;
+}
+
+std::vector<std::pair<int, int>> World::candidatePairs(double t0, double t1, FrameState& frame, int only, int also) {
+  PartTimer timer(frame.report.parts.bounds);
+  std::vector<Bounds> boxes(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    boxes[b] = sweptBounds(int(b), t0, t1);
+    boxes[b].inflate(scene_.collisionTolerance);
+  }
+  return overlappingPairs(boxes, [&](int i, int j) {
+    if (bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic()) return true;
+    if (only < 0) return false;
+    return !(i == only || j == only || i == also || j == also);
+  });
+}
+
+// ---------------------------------------------------------------------------------------
+// One pair check: the paper's solver (§5) over [t0, t1]
+
+namespace {
+
+/// The time-of-impact query of bodies i and j in the scalar type S.
+template <typename S>
+ToiResult<double> query(const WorldBody& P, const WorldBody& Q, double t0, double t1, double tolerance,
+                        ExtrusionVariant variant) {
+  const Shape<S>* shapeP;
+  const Shape<S>* shapeQ;
+  if constexpr (std::is_same_v<S, float>) {
+    shapeP = &P.shapeFloat;
+    shapeQ = &Q.shapeFloat;
+  } else {
+    shapeP = &P.shape;
+    shapeQ = &Q.shape;
+  }
+  const Moving<Shape<S>> movingP{*shapeP, castMotion<S>(P.path.motion)};
+  const Moving<Shape<S>> movingQ{*shapeQ, castMotion<S>(Q.path.motion)};
+  ToiSettings<S> settings;
+  settings.collisionTolerance = S(tolerance);
+  settings.variant = variant;
+  const ToiResult<S> r = timeOfImpact(movingP, movingQ, S(t0), S(t1), settings);
+  ToiResult<double> out;
+  out.status = r.status;
+  out.time = std::clamp(double(r.time), t0, t1);
+  out.distance = double(r.distance);
+  out.normal = r.normal.template cast<double>();
+  out.witnessP = r.witnessP.template cast<double>();
+  out.witnessQ = r.witnessQ.template cast<double>();
+  out.brentIterations = r.brentIterations;
+  out.gjkRuns = r.gjkRuns;
+  out.sdEvaluations = r.sdEvaluations;
+  out.restarts = r.restarts;
+  return out;
+}
+
+}  // namespace
+
+/// The contact point of a hit (contact.hpp) and the normal speed of j relative to i there
+/// (negative: approaching). The impulse acts at the same point, so a hit that is
+/// approaching here is never found "separating" by the impulse.
+double World::approachAt(Hit& hit, const BodyState& si, const BodyState& sj, FrameState& frame) const {
+  PartTimer timer(frame.report.parts.impulses);
+  // The touching feature: the points within two tolerances of the supporting plane. A box
+  // lying flat touches with its face (the impulse acts at its centre); tilted by more than
+  // that, with its lowest edge or corner, where the impulse rights it (Mirtich's
+  // microcollisions at the touching corners).
+  const double depth = 2 * scene_.collisionTolerance;
+  hit.contact = contactPoint(bodies_[hit.i].shape, si.worldFromBody, bodies_[hit.j].shape, sj.worldFromBody,
+                             hit.pointI, hit.pointJ, hit.normal, depth);
+  return hit.normal.dot(bodies_[hit.j].rigid.velocityAt(sj, hit.contact) -
+                        bodies_[hit.i].rigid.velocityAt(si, hit.contact));
+}
+
+bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit& hit) {
+  FrameCounters& c = frame.report.counters;
+  const double frameLength = 1.0 / scene_.frameRate;
+  // A contact within the tolerance that is already moving apart is no collision: look again
+  // once the bodies can have left the tolerance band (at most 8 looks).
+  for (int look = 0; look < 8 && t0 < t1; ++look) {
+    ToiResult<double> r;
+    {
+      PartTimer timer(frame.report.parts.collisionDetection);
+      r = scene_.scalar == CollisionScalar::Float
+              ? query<float>(bodies_[i], bodies_[j], t0, t1, scene_.collisionTolerance, settings_.variant)
+              : query<double>(bodies_[i], bodies_[j], t0, t1, scene_.collisionTolerance, settings_.variant);
+    }
+    ++c.collisionChecks;
+      c.brentIterations += r.brentIterations;
+    c.brentMax = std::max(c.brentMax, r.brentIterations);
+    c.completeTests += r.gjkRuns;
+    if (settings_.trace) trace_.push_back({TraceEvent::Kind::Check, i, j, t0, t1});
+    if (r.status == ToiStatus::Hit || r.status == ToiStatus::PhotoFinish ||
+        (r.status == ToiStatus::IterationCap && r.brentIterations > 0))
+      ++c.brentQueries;
+    switch (r.status) {
+      case ToiStatus::NoCollision:
+      case ToiStatus::Separating: return false;
+      case ToiStatus::PhotoFinish: ++c.photoFinishes; return false;
+      case ToiStatus::NumericalFailure:
+        throw std::runtime_error("bodies '" + bodies_[i].name + "' and '" + bodies_[j].name +
+                                 "': the time-of-impact solver met a non-finite support point near t = " +
+                                 std::to_string(t0));
+      case ToiStatus::IterationCap: ++c.solverCaps; [[fallthrough]];  // undecided: treated as a collision
+      case ToiStatus::Hit:
+      case ToiStatus::StartsPenetrating: break;
+    }
+    hit.time = r.time;
+    hit.i = i;
+    hit.j = j;
+    hit.versionI = bodies_[i].version;
+    hit.versionJ = bodies_[j].version;
+    hit.pointI = r.witnessP;
+    hit.pointJ = r.witnessQ;
+    hit.normal = r.normal;
+    const BodyState si = bodies_[i].path.stateAt(hit.time), sj = bodies_[j].path.stateAt(hit.time);
+    // The normal is the direction between the closest points; when they (nearly) coincide,
+    // the bodies touch or overlap and that direction is round-off: the pair's last
+    // reliable normal is used instead, or, for a first contact, centre to centre.
+    Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
+    if (r.distance > 1e-2 * scene_.collisionTolerance && hit.normal.squaredNorm() > 0.5) {
+      known = hit.normal;
+    } else {
+      hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
+    }
+    const double vn = approachAt(hit, si, sj, frame);
+    if (vn < 0) return true;  // approaching: a collision
+    const double leave = scene_.collisionTolerance / std::max(vn, 1e-12);
+    t0 = hit.time + std::clamp(leave, 1e-4 * frameLength, frameLength / 16);
+  }
+  return false;
+}
+
+// ---------------------------------------------------------------------------------------
+// A collision: back to t_c, the impulse, on to the frame's end
+
+void World::resolve(const Hit& hit, FrameState& frame) {
+  // Roll back: the bodies' states at the time of impact.
+  BodyState si = renormalized(bodies_[hit.i].path.stateAt(hit.time));
+  BodyState sj = renormalized(bodies_[hit.j].path.stateAt(hit.time));
+  ImpulseResult result;
+  {
+    PartTimer timer(frame.report.parts.impulses);
+    result = resolveCollision(bodies_[hit.i].rigid, si, bodies_[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
+                              CollisionMaterial{scene_.restitution, scene_.friction}, impulse_);
+  }
+  FrameCounters& c = frame.report.counters;
+  ++c.collisions;
+  if (result.status == ImpulseStatus::Microcollision) ++c.microcollisions;
+  frame.collidedPairs.emplace_back(hit.i, hit.j);
+  collisionLog_.push_back({hit.time, double(hit.i), double(hit.j)});
+  if (settings_.trace) trace_.push_back({TraceEvent::Kind::Collision, hit.i, hit.j, hit.time, hit.time});
+  // On from t_c with the new velocities, to the end of the current path (the frame's end,
+  // or one frame on when the impact is at the very end).
+  const double frameEnd = double(frame_ + 1) / scene_.frameRate;
+  for (const auto& [b, state] : {std::pair<int, const BodyState&>{hit.i, si}, std::pair<int, const BodyState&>{hit.j, sj}}) {
+    WorldBody& body = bodies_[b];
+    if (body.rigid.isStatic()) continue;
+    const double end = std::max(body.path.t1, frameEnd);
+    if (body.path.t1 > hit.time) {
+      ++c.bodiesRolledBack;
+      if (settings_.trace) trace_.push_back({TraceEvent::Kind::Rollback, b, -1, body.path.t1, hit.time});
+    }
+    const double t1 = end - hit.time > 1e-9 ? end : hit.time + 1.0 / scene_.frameRate;
+    {
+      PartTimer timer(frame.report.parts.integration);
+      body.path = freeFlight(body.rigid, state, hit.time, t1, scene_.gravity);
+    }
+    ++body.version;
+    auto& pieces = frame.pieces[b];
+    if (!pieces.empty() && pieces.back().end > hit.time) pieces.back().end = hit.time;
+    pieces.push_back({body.path, t1});
+    if (settings_.trace) trace_.push_back({TraceEvent::Kind::Advance, b, -1, hit.time, t1});
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// The orderings
+
+void World::runTimewarp(double T0, double T1, FrameState& frame) {
+  // Every body runs ahead to the frame's end on its own: its local time is T1.
+  flyAll(T0, T1, frame);
+  std::priority_queue<Hit, std::vector<Hit>, std::greater<Hit>> queue;
+  {
+    Hit hit;
+    for (const auto& [i, j] : candidatePairs(T0, T1, frame))
+      if (checkPair(i, j, T0, T1, frame, hit)) queue.push(hit);
+  }
+  // The swept bounds stay valid for every body a collision leaves alone: only the two
+  // bodies of a collision get new ones (from t_c), and only their pairs are looked at.
+  {
+    PartTimer timer(frame.report.parts.bounds);
+    frame.boxes.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      frame.boxes[b] = sweptBounds(int(b), T0, T1);
+      frame.boxes[b].inflate(scene_.collisionTolerance);
+    }
+  }
+  auto pairsOf = [&](int i, int j, double tc) {
+    PartTimer timer(frame.report.parts.bounds);
+    for (int b : {i, j}) {
+      frame.boxes[b] = sweptBounds(b, tc, T1);
+      frame.boxes[b].inflate(scene_.collisionTolerance);
+    }
+    std::vector<std::pair<int, int>> pairs;
+    for (int b : {i, j}) {
+      if (bodies_[b].rigid.isStatic()) continue;
+      for (int k = 0; k < int(bodies_.size()); ++k)
+        if (k != b && !(b == j && k == i) && frame.boxes[b].overlaps(frame.boxes[k]))
+          pairs.emplace_back(std::min(b, k), std::max(b, k));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+  };
+  FrameCounters& c = frame.report.counters;
+  const long cap = 200000 + 1000 * long(bodies_.size());
+  while (!queue.empty()) {
+    Hit hit;
+    {
+      PartTimer timer(frame.report.parts.ordering);
+      hit = queue.top();
+      queue.pop();
+    }
+    if (++c.events > cap)
+      throw std::runtime_error("frame " + std::to_string(frame_ + 1) + ": more than " + std::to_string(cap) +
+                               " events; the scene does not settle");
+    // Stale: computed on a path that a later-processed, earlier collision replaced.
+    if (hit.versionI != bodies_[hit.i].version || hit.versionJ != bodies_[hit.j].version) continue;
+    // The collision rolls back only its two bodies (their local time was T1) ...
+    if (std::max(bodies_[hit.i].path.t1, bodies_[hit.j].path.t1) > hit.time) ++c.rollbacks;
+    resolve(hit, frame);
+    // ... and re-checks only the pairs that touch them, from t_c on.
+    Hit next;
+    for (const auto& [i, j] : pairsOf(hit.i, hit.j, hit.time))
+      if (checkPair(i, j, hit.time, T1, frame, next)) queue.push(next);
+  }
+}
+
+void World::runToiHeap(double T0, double T1, FrameState& frame) {
+  flyAll(T0, T1, frame);
+  FrameCounters& c = frame.report.counters;
+  const long cap = 200000 + 1000 * long(bodies_.size());
+  double t = T0;
+  for (;;) {
+    // Every pair, from the current time: the earliest impact of all.
+    Hit earliest, hit;
+    bool found = false;
+    for (const auto& [i, j] : candidatePairs(t, T1, frame))
+      if (checkPair(i, j, t, T1, frame, hit) && (!found || earliest > hit)) {
+        earliest = hit;
+        found = true;
+      }
+    if (!found) break;
+    if (++c.events > cap)
+      throw std::runtime_error("frame " + std::to_string(frame_ + 1) + ": more than " + std::to_string(cap) +
+                               " events; the scene does not settle");
+    // Every body is advanced to the impact: its path is cut there and flown on.
+    t = earliest.time;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      if (bodies_[b].rigid.isStatic() || int(b) == earliest.i || int(b) == earliest.j) continue;
+      if (t < bodies_[b].path.t1 && t > bodies_[b].path.t0) {
+        fly(int(b), t, T1, frame);
+        ++c.bodiesRolledBack;
+      }
+    }
+    resolve(earliest, frame);
+  }
+}
+
+void World::runFixedStep(double T0, double T1, FrameState& frame) {
+  const int steps = scene_.fixedSubsteps;
+  FrameCounters& c = frame.report.counters;
+  for (int s = 0; s < steps; ++s) {
+    const double ta = T0 + (T1 - T0) * s / steps, tb = s + 1 == steps ? T1 : T0 + (T1 - T0) * (s + 1) / steps;
+    flyAll(ta, tb, frame);
+    // Discrete collision detection: the pairs as they stand at the step's end.
+    for (const auto& [i, j] : candidatePairs(tb, tb, frame)) {
+      ++c.collisionChecks;
+      const BodyState si = bodies_[i].path.stateAt(tb), sj = bodies_[j].path.stateAt(tb);
+      GjkResult<double> g;
+      {
+        PartTimer timer(frame.report.parts.collisionDetection);
+        if (scene_.scalar == CollisionScalar::Float) {
+          const auto r = gjk(Placed<Shape<float>>{bodies_[i].shapeFloat, castPose<float>(si.worldFromBody)},
+                             Placed<Shape<float>>{bodies_[j].shapeFloat, castPose<float>(sj.worldFromBody)});
+          g.status = r.status;
+          g.distance = r.distance;
+          g.witnessP = r.witnessP.cast<double>();
+          g.witnessQ = r.witnessQ.cast<double>();
+        } else {
+          g = gjk(Placed<Shape<double>>{bodies_[i].shape, si.worldFromBody},
+                  Placed<Shape<double>>{bodies_[j].shape, sj.worldFromBody});
+        }
+      }
+      Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
+      const bool touching = g.status == GjkStatus::Overlapping || g.distance <= scene_.collisionTolerance;
+      if (!touching) {
+        const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+        if (z.norm() > 1e-2 * scene_.collisionTolerance) known = z.normalized();
+        continue;
+      }
+      Hit hit;
+      hit.time = tb;
+      hit.i = i;
+      hit.j = j;
+      const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+      if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
+        hit.normal = z.normalized();
+        hit.pointI = g.witnessP;
+        hit.pointJ = g.witnessQ;
+      } else {  // interpenetrating: the last normal seen, or centre to centre
+        hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
+        hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
+      }
+      if (approachAt(hit, si, sj, frame) >= 0) continue;
+      ++c.events;
+      resolve(hit, frame);  // flies both bodies on from tb
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// A frame
+
+FrameReport World::step() {
+  if (done()) throw std::logic_error("World::step: the scene's duration is already simulated");
+  const auto start = Clock::now();
+  FrameState frame;
+  frame.pieces.resize(bodies_.size());
+  frame.report.frame = frame_ + 1;
+  const double T0 = double(frame_) / scene_.frameRate, T1 = double(frame_ + 1) / scene_.frameRate;
+  frame.report.time = T1;
+  switch (scene_.ordering) {
+    case Ordering::Timewarp: runTimewarp(T0, T1, frame); break;
+    case Ordering::ToiHeap: runToiHeap(T0, T1, frame); break;
+    case Ordering::FixedStep: runFixedStep(T0, T1, frame); break;
+  }
+  // The frame is final: the global virtual time has passed T1, its history is discarded.
+  if (settings_.checks) {
+    PartTimer timer(frame.report.parts.checks);
+    runChecks(T0, T1, frame);
+  }
+  ++frame_;
+  frame.report.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  PartTimes& parts = frame.report.parts;
+  parts.ordering = std::max(0.0, frame.report.wallSeconds - parts.integration - parts.bounds -
+                                     parts.collisionDetection - parts.impulses - parts.checks);
+  return frame.report;
+}
+
+// ---------------------------------------------------------------------------------------
+// The independent checks (checks.hpp)
+
+/// How fast any point of body b moved during the frame: |v| + |w| r over its pieces, the
+/// rate at which its distance to anything can change (with a few percent to spare).
+double World::speedBound(int b, const FrameState& frame) const {
+  const WorldBody& body = bodies_[b];
+  if (body.rigid.isStatic()) return 0;
+  double bound = 0;
+  for (const Piece& piece : frame.pieces[b])
+    for (const BodyState* s : {&piece.path.start, &piece.path.end}) {
+      const double w = s->angularVelocity.norm();
+      bound = std::max(bound, s->velocity.norm() + w * body.radius);
+    }
+  // Over a piece the speed changes by at most |g| (t1 - t0); the spin's size is bounded by
+  // its ends' largest (torque-free: |L| fixed, |w| within its ends' range is not guaranteed), so spare 10%.
+  return 1.1 * bound + scene_.gravity.norm() / scene_.frameRate;
+}
+
+void World::runChecks(double T0, double T1, FrameState& frame) {
+  FrameCounters& c = frame.report.counters;
+  auto poseAt = [&](int b, double t) -> Pose<double> {
+    if (bodies_[b].rigid.isStatic() || frame.pieces[b].empty()) return bodies_[b].path.motion.pose(t);
+    for (const Piece& piece : frame.pieces[b])
+      if (t <= piece.end) return piece.path.motion.pose(std::max(t, piece.path.t0));
+    return frame.pieces[b].back().path.motion.pose(t);
+  };
+  // The deepest penetration at the frame's end.
+  std::vector<Bounds> boxes(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].rigid.isStatic() || frame.pieces[b].empty()) {
+      boxes[b] = sweptBounds(int(b), T0, T1);
+    } else {
+      for (const Piece& piece : frame.pieces[b])
+        if (piece.end > piece.path.t0) boxes[b].add(sweptBounds(int(b), piece.path, piece.path.t0, piece.end));
+    }
+    boxes[b].inflate(scene_.collisionTolerance);
+  }
+  const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic(); });
+  for (const auto& [i, j] : pairs) {
+    const double d = referenceSignedDistance(bodies_[i], poseAt(i, T1), bodies_[j], poseAt(j, T1));
+    c.maxPenetration = std::max(c.maxPenetration, -d);
+    // Tunnelling: a pair with no collision reported this frame that came closer than
+    // minus twice the tolerance (interpenetrated) at some time of the frame.
+    const bool reported = std::find(frame.collidedPairs.begin(), frame.collidedPairs.end(), std::make_pair(i, j)) !=
+                          frame.collidedPairs.end();
+    if (reported) continue;
+    const double lipschitz = speedBound(i, frame) + speedBound(j, frame);
+    if (firstInterpenetration([&](double t) { return referenceSignedDistance(bodies_[i], poseAt(i, t), bodies_[j], poseAt(j, t)); },
+                              lipschitz, -2 * scene_.collisionTolerance, T0, T1))
+      ++c.tunnelled;
+  }
+}
+
+}  // namespace gjkx

@@ -1,0 +1,123 @@
+// The scene file: every key read, every bad input rejected with the body and the field named.
+#include <gjkx/timewarp/scene.hpp>
+#include <gjkx/timewarp/world.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace gjkx;
+
+namespace {
+
+/// A valid scene with one body whose fields are `body` (JSON members), and scene members `extra`.
+std::string sceneWith(const std::string& body, const std::string& extra = "") {
+  return R"({ "duration": 0.5, )" + extra + R"( "bodies": [ { "name": "floor", "shape": {"box": [5, 5, 0.5]},
+      "position": [0, 0, -0.5], "static": true }, { "name": "ball", )" +
+         body + R"( } ] })";
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    const Scene scene = parseScene(text, "test.json");
+    World world(scene);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("scene: every key is read") {
+  const Scene scene = parseScene(R"({ "gravity": [0, -9.8, 0], "frame_rate": 30, "duration": 2,
+      "collision_tolerance": 0.001, "restitution": 0.5, "friction": 0.25, "scalar": "double",
+      "ordering": "toi_heap", "fixed_substeps": 4,
+      "bodies": [ { "name": "b", "shape": {"capsule": [0.1, 0.3]}, "position": [1, 2, 3],
+                    "orientation": [0, 0, 0, 2], "velocity": [1, 0, 0], "angular_velocity": [0, 0, 1],
+                    "density": 500, "static": false },
+                  { "name": "p", "shape": {"polytope": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]}, "position": [5, 0, 0] } ] })");
+  CHECK(scene.gravity == Eigen::Vector3d(0, -9.8, 0));
+  CHECK(scene.frameRate == 30);
+  CHECK(scene.duration == 2);
+  CHECK(scene.collisionTolerance == 0.001);
+  CHECK(scene.restitution == 0.5);
+  CHECK(scene.friction == 0.25);
+  CHECK(scene.scalar == CollisionScalar::Double);
+  CHECK(scene.ordering == Ordering::ToiHeap);
+  CHECK(scene.fixedSubsteps == 4);
+  REQUIRE(scene.bodies.size() == 2);
+  const BodySpec& b = scene.bodies[0];
+  CHECK(b.shape.kind == ShapeSpec::Kind::Capsule);
+  CHECK(b.shape.radius == 0.1);
+  CHECK(b.shape.halfLength == 0.3);
+  CHECK(b.position == Eigen::Vector3d(1, 2, 3));
+  CHECK(b.orientation.z() == Approx(1.0));  // normalised
+  CHECK(b.density == 500);
+  CHECK(scene.bodies[1].shape.points.size() == 4);
+  CHECK(scene.bodies[1].density == 1000);  // the default
+}
+
+TEST_CASE("scene: defaults are the paper's settings") {
+  const Scene scene = parseScene(sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])"));
+  CHECK(scene.frameRate == 24);
+  CHECK(scene.restitution == 0.7);
+  CHECK(scene.friction == 0.4);
+  CHECK(scene.scalar == CollisionScalar::Float);
+  CHECK(scene.ordering == Ordering::Timewarp);
+  CHECK(scene.collisionTolerance == Approx(std::sqrt(double(std::numeric_limits<float>::epsilon()))).epsilon(1e-6));
+}
+
+TEST_CASE("scene: bad input names the body and the field") {
+  struct Case {
+    const char* what;
+    std::string text;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {"a missing field", sceneWith(R"("shape": {"sphere": 0.1})"), {"body 'ball'", "'position'", "missing"}},
+      {"a missing name", R"({ "duration": 1, "bodies": [ { "shape": {"sphere": 0.1}, "position": [0, 0, 1] } ] })",
+       {"bodies[0]", "'name'", "missing"}},
+      {"a negative radius", sceneWith(R"("shape": {"sphere": -0.1}, "position": [0, 0, 1])"),
+       {"body 'ball'", "'shape.sphere'", "positive"}},
+      {"a negative capsule radius", sceneWith(R"("shape": {"capsule": [-1, 1]}, "position": [0, 0, 1])"),
+       {"body 'ball'", "shape.capsule[0]", "positive"}},
+      {"an infinite coordinate (JSON has no infinity: the number overflows)",
+       sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 1e999, 1])"), {"not valid JSON", "1e999"}},
+      {"NaN (not JSON)", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, NaN, 1])"), {"not valid JSON"}},
+      {"an unknown body key", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "mass": 3)"),
+       {"body 'ball'", "'mass'", "not a known key"}},
+      {"an unknown scene key", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])", R"("gravityy": 1,)"),
+       {"'gravityy'", "not a known key"}},
+      {"an unknown shape", sceneWith(R"("shape": {"cone": 1}, "position": [0, 0, 1])"), {"body 'ball'", "shape.cone"}},
+      {"a zero quaternion", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "orientation": [0,0,0,0])"),
+       {"body 'ball'", "'orientation'", "zero"}},
+      {"a wrong type", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "static": "yes")"),
+       {"body 'ball'", "'static'"}},
+      {"an unknown ordering", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])", R"("ordering": "fast",)"),
+       {"'ordering'"}},
+      {"a flat polytope", sceneWith(R"("shape": {"polytope": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}, "position": [0, 0, 1])"),
+       {"body 'ball'", "'shape'"}},
+      {"two bodies overlapping at the start", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 0.05])"),
+       {"body 'floor'", "body 'ball'", "overlapping"}},
+      {"a velocity on a static body",
+       sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "static": true, "velocity": [1, 0, 0])"),
+       {"body 'ball'", "'velocity'", "static"}},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what << ": " << c.text);
+    const std::string message = errorOf(c.text);
+    INFO("message: " << message);
+    REQUIRE_FALSE(message.empty());
+    for (const std::string& m : c.mentions) CHECK(message.find(m) != std::string::npos);
+  }
+}
+
+TEST_CASE("scene: a file that cannot be read is named") {
+  try {
+    (void)loadScene("/nonexistent/scene.json");
+    FAIL("no error");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("/nonexistent/scene.json") != std::string::npos);
+  }
+}
