@@ -5,6 +5,7 @@
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/reference/time_of_impact.hpp>
 
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -55,12 +56,35 @@ std::optional<Cloud> cloudOf(const Shape<double>& shape, const Pose<double>& pos
 
 }  // namespace
 
+namespace {
+
+double signedDistanceOfPieces(const Shape<double>& a, const Pose<double>& poseA, const Shape<double>& b,
+                              const Pose<double>& poseB) {
+  const auto cloudA = cloudOf(a, poseA), cloudB = cloudOf(b, poseB);
+  if (cloudA && cloudB) return double(reference::signedDistance(*cloudA, *cloudB));
+  const auto g = gjk(Placed<Shape<double>>{a, poseA}, Placed<Shape<double>>{b, poseB});
+  return g.status == GjkStatus::Overlapping ? 0.0 : g.distance;
+}
+
+}  // namespace
+
 double referenceSignedDistance(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b,
                                const Pose<double>& poseB) {
-  const auto cloudA = cloudOf(a.shape, poseA), cloudB = cloudOf(b.shape, poseB);
-  if (cloudA && cloudB) return double(reference::signedDistance(*cloudA, *cloudB));
-  const auto g = gjk(Placed<Shape<double>>{a.shape, poseA}, Placed<Shape<double>>{b.shape, poseB});
-  return g.status == GjkStatus::Overlapping ? 0.0 : g.distance;
+  if (a.pieces.size() == 1 && b.pieces.size() == 1) return signedDistanceOfPieces(a.pieces[0], poseA, b.pieces[0], poseB);
+  // Bodies of several convex pieces: the least over the piece pairs (the deepest
+  // penetration), pairs whose bounding spheres are farther apart than the best so far skipped.
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& pa : a.pieces) {
+    const Eigen::Vector3d ca = poseA(pa.center());
+    const double ra = pa.boundingRadius() + (pa.center()).norm();
+    for (const auto& pb : b.pieces) {
+      const Eigen::Vector3d cb = poseB(pb.center());
+      const double rb = pb.boundingRadius() + (pb.center()).norm();
+      if ((ca - cb).norm() - ra - rb > best) continue;
+      best = std::min(best, signedDistanceOfPieces(pa, poseA, pb, poseB));
+    }
+  }
+  return best;
 }
 
 bool firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,

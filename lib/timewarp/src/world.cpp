@@ -4,6 +4,8 @@
 
 #include <gjkx/dynamics/mass_properties.hpp>
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/mesh/convex_decomposition.hpp>
+#include <gjkx/mesh/triangle_mesh.hpp>
 #include <gjkx/timewarp/checks.hpp>
 #include <gjkx/timewarp/contact.hpp>
 #include <gjkx/timewarp/motion_cast.hpp>
@@ -25,6 +27,7 @@ namespace gjkx {
 struct World::Hit {
   double time = 0;
   int i = -1, j = -1;
+  int pieceI = 0, pieceJ = 0;  // the convex pieces that touch
   int versionI = 0, versionJ = 0;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, from i towards j
   Eigen::Vector3d pointI = Eigen::Vector3d::Zero(), pointJ = Eigen::Vector3d::Zero();
@@ -126,34 +129,78 @@ std::string bodyField(const BodySpec& body, std::size_t index, const std::string
 World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene), settings_(settings) {
   frameCount_ = std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9)));
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
+  // A mesh is read and decomposed once however many bodies use it (the decomposition is
+  // also cached on disk, gjkx/mesh/convex_decomposition.hpp).
+  std::map<std::string, std::pair<TriangleMesh, ConvexDecomposition>> meshes;
   for (std::size_t index = 0; index < scene.bodies.size(); ++index) {
     const BodySpec& spec = scene.bodies[index];
-    if (spec.shape.kind == ShapeSpec::Kind::Mesh)
-      throw std::invalid_argument(bodyField(spec, index, "shape.mesh") +
-                                  " needs the nonconvex (kdop) stage, which this world does not use yet");
+    WorldBody body;
+    body.name = spec.name;
     // The body frame is put at the centre of mass: free flight turns a body about it.
     Eigen::Vector3d centerOfMass = Eigen::Vector3d::Zero();
-    std::vector<Eigen::Vector3d> points = spec.shape.points;
     MassProperties mass{};
-    try {
-      const Shape<double> sceneShape = shapeOf(spec.shape, points);
-      if (!spec.isStatic) {
-        mass = massProperties(sceneShape, spec.density);
-        centerOfMass = mass.centerOfMass;
-        mass.centerOfMass = Eigen::Vector3d::Zero();
+    if (spec.shape.kind == ShapeSpec::Kind::Mesh) {
+      const std::string& given = spec.shape.meshPath;
+      const std::string path = !given.empty() && given[0] == '/' ? given : scene.folder + "/" + given;
+      try {
+        auto found = meshes.find(path);
+        if (found == meshes.end()) {
+          TriangleMesh mesh = readMesh(path);
+          ConvexDecomposition pieces = decompose(mesh);
+          found = meshes.emplace(path, std::make_pair(std::move(mesh), std::move(pieces))).first;
+        }
+        const TriangleMesh& mesh = found->second.first;
+        if (!spec.isStatic) {  // a moving mesh needs a volume: it must be closed
+          validateMesh(mesh, MeshRequirements{true});
+          mass = polyhedronMassProperties(mesh.vertices, mesh.triangles, spec.density);
+          centerOfMass = mass.centerOfMass;
+          mass.centerOfMass = Eigen::Vector3d::Zero();
+        }
+        std::vector<Polytope<double>> pieces;
+        std::vector<Polytope<float>> piecesFloat;
+        std::vector<Eigen::Vector3d> all;
+        for (const auto& piece : found->second.second.pieces) {
+          std::vector<Eigen::Vector3d> points;
+          std::vector<Eigen::Vector3f> pointsFloat;
+          for (const auto& p : piece) {
+            points.push_back(p - centerOfMass);
+            pointsFloat.push_back((p - centerOfMass).cast<float>());
+          }
+          all.insert(all.end(), points.begin(), points.end());
+          pieces.push_back(Polytope<double>::hull(points));
+          piecesFloat.push_back(Polytope<float>::hull(pointsFloat));
+        }
+        for (const auto& piece : pieces) body.pieces.push_back(piece);
+        for (const auto& piece : piecesFloat) body.piecesFloat.push_back(piece);
+        body.bvh = std::make_shared<const Bvh<double>>(std::move(pieces));
+        body.bvhFloat = std::make_shared<const Bvh<float>>(std::move(piecesFloat));
+        body.shape = Polytope<double>::hull(all);
+        std::vector<Eigen::Vector3f> allFloat;
+        for (const auto& p : all) allFloat.push_back(p.cast<float>());
+        body.shapeFloat = Polytope<float>::hull(allFloat);
+      } catch (const std::exception& e) {
+        throw std::invalid_argument(bodyField(spec, index, "shape.mesh") + ": " + e.what());
       }
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(bodyField(spec, index, "shape") + ": " + e.what());
+    } else {
+      std::vector<Eigen::Vector3d> points = spec.shape.points;
+      try {
+        const Shape<double> sceneShape = shapeOf(spec.shape, points);
+        if (!spec.isStatic) {
+          mass = massProperties(sceneShape, spec.density);
+          centerOfMass = mass.centerOfMass;
+          mass.centerOfMass = Eigen::Vector3d::Zero();
+        }
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(bodyField(spec, index, "shape") + ": " + e.what());
+      }
+      for (auto& p : points) p -= centerOfMass;
+      body.shape = shapeOf(spec.shape, points);
+      body.shapeFloat = floatShapeOf(spec.shape, points);
+      body.pieces = {body.shape};
+      body.piecesFloat = {body.shapeFloat};
     }
-    for (auto& p : points) p -= centerOfMass;
-    WorldBody body{spec.name,
-                   shapeOf(spec.shape, points),
-                   floatShapeOf(spec.shape, points),
-                   -centerOfMass,
-                   spec.isStatic ? RigidBody::fixed() : RigidBody::dynamic(mass),
-                   0,
-                   FreeFlight{},
-                   0};
+    body.frameOrigin = -centerOfMass;
+    body.rigid = spec.isStatic ? RigidBody::fixed() : RigidBody::dynamic(mass);
     body.radius = body.shape.boundingRadius();
     BodyState start;
     start.worldFromBody.rotation = spec.orientation.toRotationMatrix();
@@ -281,18 +328,18 @@ std::vector<std::pair<int, int>> World::candidatePairs(double t0, double t1, Fra
 
 namespace {
 
-/// The time-of-impact query of bodies i and j in the scalar type S.
+/// The time-of-impact query of piece pi of body P and piece pj of body Q in the scalar type S.
 template <typename S>
-ToiResult<double> query(const WorldBody& P, const WorldBody& Q, double t0, double t1, double tolerance,
-                        ExtrusionVariant variant) {
+ToiResult<double> query(const WorldBody& P, int pi, const WorldBody& Q, int pj, double t0, double t1,
+                        double tolerance, ExtrusionVariant variant) {
   const Shape<S>* shapeP;
   const Shape<S>* shapeQ;
   if constexpr (std::is_same_v<S, float>) {
-    shapeP = &P.shapeFloat;
-    shapeQ = &Q.shapeFloat;
+    shapeP = &P.piecesFloat[pi];
+    shapeQ = &Q.piecesFloat[pj];
   } else {
-    shapeP = &P.shape;
-    shapeQ = &Q.shape;
+    shapeP = &P.pieces[pi];
+    shapeQ = &Q.pieces[pj];
   }
   const Moving<Shape<S>> movingP{*shapeP, castMotion<S>(P.path.motion)};
   const Moving<Shape<S>> movingQ{*shapeQ, castMotion<S>(Q.path.motion)};
@@ -326,13 +373,62 @@ double World::approachAt(Hit& hit, const BodyState& si, const BodyState& sj, Fra
   // that, with its lowest edge or corner, where the impulse rights it (Mirtich's
   // microcollisions at the touching corners).
   const double depth = 2 * scene_.collisionTolerance;
-  hit.contact = contactPoint(bodies_[hit.i].shape, si.worldFromBody, bodies_[hit.j].shape, sj.worldFromBody,
+  hit.contact = contactPoint(bodies_[hit.i].pieces[hit.pieceI], si.worldFromBody, bodies_[hit.j].pieces[hit.pieceJ],
+                             sj.worldFromBody,
                              hit.pointI, hit.pointJ, hit.normal, depth);
   return hit.normal.dot(bodies_[hit.j].rigid.velocityAt(sj, hit.contact) -
                         bodies_[hit.i].rigid.velocityAt(si, hit.contact));
 }
 
+/// The piece pairs of bodies i and j that may touch over [t0, t1]: the one pair of two
+/// convex bodies; for mesh bodies, the pairs the 14-DOP hierarchies cannot prove apart
+/// (kdop's body-pair query, its front kept between frames for the pair); a mesh against a
+/// convex body that is not a polytope: every piece.
+template <typename S>
+std::vector<PiecePair> World::piecePairs(int i, int j, double t0, double t1, FrameState& frame) {
+  const WorldBody& A = bodies_[i];
+  const WorldBody& B = bodies_[j];
+  if (A.pieces.size() == 1 && B.pieces.size() == 1) return {PiecePair{0, 0}};
+  std::vector<PiecePair> pairs;
+  if (A.bvh && B.bvh) {
+    PartTimer timer(frame.report.parts.bounds);
+    auto& fronts = [&]() -> auto& {
+      if constexpr (std::is_same_v<S, float>) return frontsFloat_;
+      else return frontsDouble_;
+    }();
+    auto& query = fronts[pairSlot(i, j)];
+    if (!query) {
+      BodyPairSettings<S> settings;
+      settings.tolerance = S(scene_.collisionTolerance);
+      if constexpr (std::is_same_v<S, float>) query = std::make_unique<BodyPairQuery<S>>(*A.bvhFloat, *B.bvhFloat, settings);
+      else query = std::make_unique<BodyPairQuery<S>>(*A.bvh, *B.bvh, settings);
+    }
+    const BodyPairOutput<S> out = query->query(castMotion<S>(A.path.motion), castMotion<S>(B.path.motion), S(t0), S(t1));
+    frame.report.counters.kdopNodes += out.counters.nodesVisited;
+    pairs = out.pairs;
+  } else {
+    for (int a = 0; a < int(A.pieces.size()); ++a)
+      for (int b = 0; b < int(B.pieces.size()); ++b) pairs.push_back(PiecePair{a, b});
+  }
+  if (A.pieces.size() > 1 || B.pieces.size() > 1) frame.report.counters.piecePairs += long(pairs.size());
+  return pairs;
+}
+
 bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit& hit) {
+  const std::vector<PiecePair> pairs = scene_.scalar == CollisionScalar::Float ? piecePairs<float>(i, j, t0, t1, frame)
+                                                                               : piecePairs<double>(i, j, t0, t1, frame);
+  // The pair's collision is the earliest of its pieces'.
+  bool found = false;
+  Hit piece;
+  for (const PiecePair& p : pairs) {
+    if (!checkPieces(i, p.a, j, p.b, t0, t1, frame, piece)) continue;
+    if (!found || piece.time < hit.time) hit = piece;
+    found = true;
+  }
+  return found;
+}
+
+bool World::checkPieces(int i, int pi, int j, int pj, double t0, double t1, FrameState& frame, Hit& hit) {
   FrameCounters& c = frame.report.counters;
   const double frameLength = 1.0 / scene_.frameRate;
   // A contact within the tolerance that is already moving apart is no collision: look again
@@ -342,8 +438,8 @@ bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit
     {
       PartTimer timer(frame.report.parts.collisionDetection);
       r = scene_.scalar == CollisionScalar::Float
-              ? query<float>(bodies_[i], bodies_[j], t0, t1, scene_.collisionTolerance, settings_.variant)
-              : query<double>(bodies_[i], bodies_[j], t0, t1, scene_.collisionTolerance, settings_.variant);
+              ? query<float>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_.variant)
+              : query<double>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_.variant);
     }
     ++c.collisionChecks;
       c.brentIterations += r.brentIterations;
@@ -368,6 +464,8 @@ bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit
     hit.time = r.time;
     hit.i = i;
     hit.j = j;
+    hit.pieceI = pi;
+    hit.pieceJ = pj;
     hit.versionI = bodies_[i].version;
     hit.versionJ = bodies_[j].version;
     hit.pointI = r.witnessP;
@@ -377,7 +475,7 @@ bool World::checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit
     // The normal is the direction between the closest points; when they (nearly) coincide,
     // the bodies touch or overlap and that direction is round-off: the pair's last
     // reliable normal is used instead, or, for a first contact, centre to centre.
-    Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
+    Eigen::Vector3d& known = knownNormal(i, pi, j, pj);
     if (r.distance > 1e-2 * scene_.collisionTolerance && hit.normal.squaredNorm() > 0.5) {
       known = hit.normal;
     } else {
@@ -466,7 +564,7 @@ void World::runTimewarp(double T0, double T1, FrameState& frame) {
     for (int b : {i, j}) {
       if (bodies_[b].rigid.isStatic()) continue;
       for (int k = 0; k < int(bodies_.size()); ++k)
-        if (k != b && !(b == j && k == i) && frame.boxes[b].overlaps(frame.boxes[k]))
+        if (k != b && frame.boxes[b].overlaps(frame.boxes[k]))
           pairs.emplace_back(std::min(b, k), std::max(b, k));
     }
     std::sort(pairs.begin(), pairs.end());
@@ -536,44 +634,54 @@ void World::runFixedStep(double T0, double T1, FrameState& frame) {
     flyAll(ta, tb, frame);
     // Discrete collision detection: the pairs as they stand at the step's end.
     for (const auto& [i, j] : candidatePairs(tb, tb, frame)) {
-      ++c.collisionChecks;
       const BodyState si = bodies_[i].path.stateAt(tb), sj = bodies_[j].path.stateAt(tb);
-      GjkResult<double> g;
-      {
-        PartTimer timer(frame.report.parts.collisionDetection);
-        if (scene_.scalar == CollisionScalar::Float) {
-          const auto r = gjk(Placed<Shape<float>>{bodies_[i].shapeFloat, castPose<float>(si.worldFromBody)},
-                             Placed<Shape<float>>{bodies_[j].shapeFloat, castPose<float>(sj.worldFromBody)});
-          g.status = r.status;
-          g.distance = r.distance;
-          g.witnessP = r.witnessP.cast<double>();
-          g.witnessQ = r.witnessQ.cast<double>();
-        } else {
-          g = gjk(Placed<Shape<double>>{bodies_[i].shape, si.worldFromBody},
-                  Placed<Shape<double>>{bodies_[j].shape, sj.worldFromBody});
+      const std::vector<PiecePair> pairs = scene_.scalar == CollisionScalar::Float
+                                               ? piecePairs<float>(i, j, tb, tb, frame)
+                                               : piecePairs<double>(i, j, tb, tb, frame);
+      bool found = false;
+      Hit hit;
+      for (const PiecePair& p : pairs) {
+        ++c.collisionChecks;
+        GjkResult<double> g;
+        {
+          PartTimer timer(frame.report.parts.collisionDetection);
+          if (scene_.scalar == CollisionScalar::Float) {
+            const auto r = gjk(Placed<Shape<float>>{bodies_[i].piecesFloat[p.a], castPose<float>(si.worldFromBody)},
+                               Placed<Shape<float>>{bodies_[j].piecesFloat[p.b], castPose<float>(sj.worldFromBody)});
+            g.status = r.status;
+            g.distance = r.distance;
+            g.witnessP = r.witnessP.cast<double>();
+            g.witnessQ = r.witnessQ.cast<double>();
+          } else {
+            g = gjk(Placed<Shape<double>>{bodies_[i].pieces[p.a], si.worldFromBody},
+                    Placed<Shape<double>>{bodies_[j].pieces[p.b], sj.worldFromBody});
+          }
+        }
+        Eigen::Vector3d& known = knownNormal(i, p.a, j, p.b);
+        const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+        const bool touching = g.status == GjkStatus::Overlapping || g.distance <= scene_.collisionTolerance;
+        if (!touching) {
+          if (z.norm() > 1e-2 * scene_.collisionTolerance) known = z.normalized();
+          continue;
+        }
+        // The deepest-looking touching piece pair speaks for the body pair (the first found).
+        if (found) continue;
+        found = true;
+        hit.time = tb;
+        hit.i = i;
+        hit.j = j;
+        hit.pieceI = p.a;
+        hit.pieceJ = p.b;
+        if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
+          hit.normal = z.normalized();
+          hit.pointI = g.witnessP;
+          hit.pointJ = g.witnessQ;
+        } else {  // interpenetrating: the last normal seen, or centre to centre
+          hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
+          hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
         }
       }
-      Eigen::Vector3d& known = pairNormal_.try_emplace(pairSlot(i, j), Eigen::Vector3d::Zero()).first->second;
-      const bool touching = g.status == GjkStatus::Overlapping || g.distance <= scene_.collisionTolerance;
-      if (!touching) {
-        const Eigen::Vector3d z = g.witnessQ - g.witnessP;
-        if (z.norm() > 1e-2 * scene_.collisionTolerance) known = z.normalized();
-        continue;
-      }
-      Hit hit;
-      hit.time = tb;
-      hit.i = i;
-      hit.j = j;
-      const Eigen::Vector3d z = g.witnessQ - g.witnessP;
-      if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
-        hit.normal = z.normalized();
-        hit.pointI = g.witnessP;
-        hit.pointJ = g.witnessQ;
-      } else {  // interpenetrating: the last normal seen, or centre to centre
-        hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
-        hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
-      }
-      if (approachAt(hit, si, sj, frame) >= 0) continue;
+      if (!found || approachAt(hit, si, sj, frame) >= 0) continue;
       ++c.events;
       resolve(hit, frame);  // flies both bodies on from tb
     }

@@ -30,12 +30,14 @@
 #include <gjkx/dynamics/free_flight.hpp>
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/dynamics/rigid_body.hpp>
+#include <gjkx/kdop/body_pair.hpp>
 #include <gjkx/support_mapping/shape.hpp>
 #include <gjkx/timewarp/broad_phase.hpp>
 #include <gjkx/timewarp/scene.hpp>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,6 +68,8 @@ struct FrameCounters {
   long photoFinishes = 0;       ///< queries that ended in a photo finish (§5)
   long completeTests = 0;       ///< complete extrusion tests (one per query plus restarts)
   long solverCaps = 0;          ///< queries that ran out of iterations (treated as collisions)
+  long piecePairs = 0;          ///< convex piece pairs of mesh bodies that the 14-DOP hierarchy handed to the solver
+  long kdopNodes = 0;           ///< nodes of the hierarchies' test trees visited (kdop)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported
 };
@@ -106,12 +110,20 @@ struct TraceEvent {
 };
 
 /// A body of the world: its shape about its centre of mass, its mass, its path.
+///
+/// Every body is a set of convex pieces (§6): a convex body is one piece, a mesh body the
+/// pieces of its convex decomposition (gjkx/mesh), held in a 14-DOP hierarchy
+/// (gjkx/kdop) that prunes the piece pairs of a body pair before the solver sees them.
 struct WorldBody {
   std::string name;                 ///< its name in the scene
-  Shape<double> shape;              ///< its shape, body frame at the centre of mass
-  Shape<float> shapeFloat;          ///< the same in float (collision detection in float)
+  Shape<double> shape = Sphere<double>(0);   ///< its shape (a mesh body: the hull of its pieces), body frame at the centre of mass
+  Shape<float> shapeFloat = Sphere<float>(0);  ///< the same in float (collision detection in float)
+  std::vector<Shape<double>> pieces;       ///< its convex pieces (a convex body: `shape` alone)
+  std::vector<Shape<float>> piecesFloat;   ///< the same in float
+  std::shared_ptr<const Bvh<double>> bvh;       ///< a mesh body's hierarchy of pieces (null for a convex body)
+  std::shared_ptr<const Bvh<float>> bvhFloat;   ///< the same in float
   Eigen::Vector3d frameOrigin;      ///< the scene's shape frame origin, in the body frame (minus the centre of mass)
-  RigidBody rigid;                  ///< mass properties (or static)
+  RigidBody rigid = RigidBody::fixed();  ///< mass properties (or static)
   double radius = 0;                ///< bounding radius about the centre of mass
   FreeFlight path;                  ///< its path from its last event to its local time `path.t1`
   int version = 0;                  ///< bumped when its path changes: events that used the old one are stale
@@ -157,6 +169,9 @@ class World {
   std::vector<std::pair<int, int>> candidatePairs(double t0, double t1, FrameState& frame, int only = -1,
                                                   int also = -1);
   bool checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit& hit);
+  bool checkPieces(int i, int pi, int j, int pj, double t0, double t1, FrameState& frame, Hit& hit);
+  template <typename S>
+  std::vector<PiecePair> piecePairs(int i, int j, double t0, double t1, FrameState& frame);
   void resolve(const Hit& hit, FrameState& frame);
   void runTimewarp(double T0, double T1, FrameState& frame);
   void runToiHeap(double T0, double T1, FrameState& frame);
@@ -172,8 +187,15 @@ class World {
   int frameCount_ = 0;
   std::vector<TraceEvent> trace_;
   std::vector<std::array<double, 3>> collisionLog_;
-  /// Per body pair, the last reliable contact normal (see checkPair).
-  std::map<long long, Eigen::Vector3d> pairNormal_;
+  /// Per pair of mesh bodies, the body-pair query that keeps its front between frames (kdop).
+  std::map<long long, std::unique_ptr<BodyPairQuery<float>>> frontsFloat_;
+  /// The same in double.
+  std::map<long long, std::unique_ptr<BodyPairQuery<double>>> frontsDouble_;
+  /// Per piece pair, the last reliable contact normal (see checkPieces), zero until one is seen.
+  std::map<std::array<int, 4>, Eigen::Vector3d> pairNormal_;
+  Eigen::Vector3d& knownNormal(int i, int pi, int j, int pj) {
+    return pairNormal_.try_emplace(std::array<int, 4>{i, pi, j, pj}, Eigen::Vector3d::Zero()).first->second;
+  }
   long long pairSlot(int i, int j) const { return (long long)(i) * (long long)(bodies_.size()) + j; }
 };
 
