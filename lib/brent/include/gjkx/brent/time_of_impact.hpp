@@ -168,7 +168,8 @@ struct ToiResult {
   S time = S(0);
   /// The closest distance at `time`: for a hit, at most the tolerance (up to round-off), or,
   /// when the hit is reported at the last time proven free of contact (see the file
-  /// comment), at most the tolerance plus what the bodies move in one time tolerance.
+  /// comment), at most the tolerance plus what the bodies move in one time tolerance, or
+  /// in one spacing of the caller's times near \f$t_0\f$ where that is coarser (see `timeOfImpact`).
   S distance = S(0);
   /// Unit contact normal at `time`, from P towards Q.
   Vector3<S> normal = Vector3<S>::Zero();
