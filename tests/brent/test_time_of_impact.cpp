@@ -1034,6 +1034,54 @@ TEMPLATE_TEST_CASE("time of impact in P's frame: as accurate far from the origin
   }
 }
 
+// The query runs on its own clock, tau = t - t0 (timeOfImpact's comment): a short interval
+// late in time gives the hit it gives at t0 = 0, as early as the caller's times allow. A
+// point falls towards a unit box (face at x = 0.5) over tau1 = 2^-10, from x = 5.5 at 3 per
+// interval and accelerating by 3.5 per interval squared: x(u) = 5.5 - 3u - 1.75u^2,
+// u = tau/tau1, and the gap 5 - 3u - 1.75u^2 (0.25 at t1) reaches tol = 1.25 at
+// u* = (-3 + sqrt(35.25))/3.5 = 0.8392. In float at t0 = 1000 the caller's times are 6.1e-5
+// apart, 1/16 of the interval: u* lies between the times at u = 13/16 and 14/16. On the
+// caller's clock Brent's bracket stopped at its round-off, 2 * 2 eps * 1000 = 2.4e-4 (four
+// of those spacings), and the converged bracket's far end, t1, within the tolerance there,
+// was reported: a hit at u = 1 where the gap is 0.25, the late hit the fuzzer found
+// (corpus finding-toi_float_late_hit_at_t1000); or, where the far end did not qualify,
+// its near end, spacings early. Now the hit is never after u*, at most one spacing before
+// it, and its distance is the distance at the time reported.
+TEMPLATE_TEST_CASE("time of impact on the query's clock: a late start time costs no accuracy", "[toi][hard][clock]",
+                   float, double) {
+  using S = TestType;
+  const double tau1 = std::ldexp(1.0, -10);
+  const double tol = 1.25;
+  const double uStar = (-3 + std::sqrt(35.25)) / 3.5;
+  for (const double start : {0.0, 1.0, 1000.0, -1000.0}) {
+    const S t0 = S(start), t1 = S(t0 + S(tau1));
+    REQUIRE(double(t1) - double(t0) == tau1);  // the interval is exact in S at every start
+    const auto box = fixedAt(unitBox<S>(), Vector3<S>(0, 0, 0));
+    const auto point = moving(Point<S>(),
+                              Motion<S>::constantAcceleration(Pose<S>::translate(Vector3<S>(S(5.5), S(0.1), S(0.2))),
+                                                              Vector3<S>(S(-3 / tau1), 0, 0),
+                                                              Vector3<S>(S(-3.5 / (tau1 * tau1)), 0, 0), t0));
+    for (const ExtrusionVariant variant : {ExtrusionVariant::Paper, ExtrusionVariant::Certified}) {
+      ToiSettings<S> settings;
+      settings.collisionTolerance = S(tol);
+      settings.variant = variant;
+      const auto r = timeOfImpact(box, point, t0, t1, settings);
+      const double u = (double(r.time) - double(t0)) / tau1;
+      const double spacing = double(std::nextafter(std::abs(t0), std::numeric_limits<S>::infinity()) - std::abs(t0));
+      const double gapThere = 5 - 3 * u - 1.75 * u * u;
+      INFO(scalarName<S>() << ", t0 = " << start << ", " << toString(variant) << ": " << toString(r.status)
+                           << " at u = " << u << " (u* = " << uStar << "), distance " << r.distance << ", gap there "
+                           << gapThere);
+      REQUIRE(r.status == ToiStatus::Hit);
+      const double timeTol = double(settings.timeTolerance);
+      CHECK(u <= uStar + timeTol);                         // never late
+      CHECK(u >= uStar - timeTol - spacing / tau1 - 1e-5);  // early by one of the caller's spacings at most
+      CHECK(double(r.distance) == Approx(gapThere).margin(1e-4));
+      CHECK(double(r.distance) >= tol - (3 + 3.5 * u) * timeTol - 1e-4);  // not past the contact by more than the time tolerance
+    }
+  }
+}
+
 // Bad input names the field.
 TEST_CASE("time of impact refuses a bad interval or tolerance", "[toi][input]") {
   const auto P = fixedAt(unitBox<double>(), Vector3<double>(0, 0, 0));

@@ -150,6 +150,36 @@ TEST_CASE("motion interpolation takes the shortest arc", "[motion]") {
 }
 
 // Bad input enters through the named constructors, and the message names the field.
+// retimed(c): the same motion on a clock that reads 0 at time c (the time-of-impact query's
+// own clock). Every kind at every tau: the pose at c + tau; a motion that starts at c
+// reads tau exactly (its own start time becomes 0), so in double the poses are equal.
+TEMPLATE_TEST_CASE("motion retimed: the pose at tau is the pose at c + tau", "[motion][clock]", float, double) {
+  using S = TestType;
+  const Pose<S> start = Pose<S>::translate(Vec<S>(1, 2, 3));
+  Pose<S> to = Pose<S>::translate(Vec<S>(-2, 0, 5));
+  to.rotation = Eigen::AngleAxis<S>(S(0.7), Vec<S>(0, 0, 1)).toRotationMatrix();
+  const S c = S(1000);
+  const Motion<S> motions[] = {
+      Motion<S>::fixed(start),
+      Motion<S>::constantVelocity(start, Vec<S>(3, -1, 2), c),
+      Motion<S>::constantAcceleration(start, Vec<S>(3, -1, 2), Vec<S>(0, 0, -9.81f), c),
+      Motion<S>::screw(start, Vec<S>(3, -1, 2), Vec<S>(0, S(0.5), 1), c),
+      Motion<S>::interpolate(start, to, c, c + 2),
+      Motion<S>::freeFlight(start, Vec<S>(3, -1, 2), Vec<S>(0, 0, -9.81f), to.rotation, c, c + 2),
+      Motion<S>::constantVelocity(start, Vec<S>(3, -1, 2), c - 1),  // starts before c: its own tau is tau + 1
+  };
+  for (const Motion<S>& m : motions) {
+    const Motion<S> r = m.retimed(c);
+    CHECK(r.isStatic() == m.isStatic());
+    for (const S tau : {S(0), S(0.25), S(1), S(2)}) {
+      const Pose<S> a = m.pose(c + tau), b = r.pose(tau);
+      INFO("motion " << m.variant().index() << ", tau " << tau);
+      CHECK(near(a.translation, b.translation));
+      CHECK((a.rotation - b.rotation).norm() <= tol<S>());
+    }
+  }
+}
+
 TEST_CASE("motion rejects bad input", "[motion][input]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Pose<double> id = Pose<double>::identity();

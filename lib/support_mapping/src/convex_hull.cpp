@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -72,6 +73,94 @@ std::string qhullFirstError(const std::string& message) {
   return message.substr(at, message.find('\n', at) - at);
 }
 
+// Flat and thin point sets, checked where they enter. Qhull decides every predicate with
+// a round-off allowance relative to the coordinates' size, and on a set flat to ~1e-12 of
+// its size it does not always give up: it can return a hull that silently leaves input
+// points out (measured on tilted slabs of 50 random points 1e-10 to 1e-12 thick: extreme
+// points missing by up to 1.5e-5 of the size, with no error and no warning; test
+// `a thin slab's hull is the slab`). So the set's shape is measured first, in long
+// double, in a frame of its own: e1 from the point farthest from the first point p0 to
+// the point p1 farthest from that, L = |p1 - p0|; e2 towards the point farthest from that
+// line; n = e1 x e2. Its widths along e2 and n are W and T.
+//  - W or T below kFlatUlps round-offs of L (the size of the error in n.(p - p0)
+//    itself, for points given to round-off): no volume, the caller's flat input; refused.
+//  - W or T below kThinFraction of L (Qhull's trouble starts near 1e-10; kept three orders
+//    off): Qhull runs on the set stretched along e2 and n to the width L. A convex hull
+//    commutes with an affine map (the hull of A(X) is A of the hull of X, vertex for
+//    vertex, face for face), so the stretched set has the same hull, and Qhull sees a
+//    solid as fat as a cube. The hull keeps the input points themselves.
+// Every hull is then checked against its input: no input point may lie outside a boundary
+// triangle's plane (in the coordinates Qhull saw) by more than kOutsideUlps round-offs of
+// their size; otherwise the hull is refused with the point named, never returned wrong.
+constexpr long double kFlatUlps = 64;
+constexpr long double kThinFraction = 1e-6L;
+constexpr double kOutsideUlps = 4096;
+
+using LVec = Eigen::Matrix<long double, 3, 1>;
+
+struct SetShape {
+  bool flat = false;          // no volume within round-off
+  bool thin = false;          // thin enough that Qhull runs on the stretched set
+  std::vector<Eigen::Vector3d> stretched;  // the set in the frame (e1, e2 * L/W, n * L/T), when thin
+};
+
+SetShape measure(const std::vector<Eigen::Vector3d>& points) {
+  SetShape shape;
+  const auto at = [&](size_t i) { return LVec(points[i].cast<long double>()); };
+  const auto farthestFrom = [&](const auto& distance) {
+    size_t best = 0;
+    long double bestValue = -1;
+    for (size_t i = 0; i < points.size(); ++i)
+      if (const long double d = distance(at(i)); d > bestValue) {
+        bestValue = d;
+        best = i;
+      }
+    return best;
+  };
+  const LVec first = at(0);
+  const LVec p0 = at(farthestFrom([&](const LVec& p) { return (p - first).squaredNorm(); }));
+  const LVec p1 = at(farthestFrom([&](const LVec& p) { return (p - p0).squaredNorm(); }));
+  const long double L = (p1 - p0).norm();
+  long double size = 0;  // the largest coordinate: the scale of the input's own round-off
+  for (size_t i = 0; i < points.size(); ++i) size = std::max(size, at(i).cwiseAbs().maxCoeff());
+  const long double roundOff = kFlatUlps * std::numeric_limits<double>::epsilon() * size;
+  if (!(L > roundOff)) {
+    shape.flat = true;
+    return shape;
+  }
+  const LVec e1 = (p1 - p0) / L;
+  const auto offLine = [&](const LVec& p) { return ((p - p0) - e1 * e1.dot(p - p0)).norm(); };
+  const LVec p2 = at(farthestFrom(offLine));
+  const LVec towards = (p2 - p0) - e1 * e1.dot(p2 - p0);
+  if (!(towards.norm() > roundOff)) {
+    shape.flat = true;
+    return shape;
+  }
+  const LVec e2 = towards.normalized();
+  const LVec n = e1.cross(e2).normalized();
+  long double lo2 = 0, hi2 = 0, loN = 0, hiN = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const LVec d = at(i) - p0;
+    lo2 = std::min(lo2, e2.dot(d));
+    hi2 = std::max(hi2, e2.dot(d));
+    loN = std::min(loN, n.dot(d));
+    hiN = std::max(hiN, n.dot(d));
+  }
+  const long double W = hi2 - lo2, T = hiN - loN;
+  if (!(W > roundOff) || !(T > roundOff)) {
+    shape.flat = true;
+    return shape;
+  }
+  if (W >= kThinFraction * L && T >= kThinFraction * L) return shape;
+  shape.thin = true;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const LVec d = at(i) - p0;
+    shape.stretched.push_back(
+        Eigen::Vector3d(double(e1.dot(d)), double(e2.dot(d) * (L / W)), double(n.dot(d) * (L / T))));
+  }
+  return shape;
+}
+
 // Fills firstNeighbour/neighbours from a set of undirected edges.
 void buildAdjacency(ConvexHull& hull, const std::set<std::pair<int, int>>& edges) {
   const int n = static_cast<int>(hull.vertices.size());
@@ -94,9 +183,13 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
   checkFinite(points, field);
   if (points.size() < 4)
     fail(field, "a solid needs at least 4 points, got " + std::to_string(points.size()));
+  const SetShape shape = measure(points);
+  if (shape.flat) fail(field, "all points lie in one plane, to within round-off (a solid needs volume)");
+  // The coordinates Qhull sees: the points, or a thin set stretched to a fat one (see measure()).
+  const std::vector<Eigen::Vector3d>& seen = shape.thin ? shape.stretched : points;
   std::vector<double> coords;
   coords.reserve(points.size() * 3);
-  for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  for (const auto& p : seen) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
 
   ConvexHull hull;
   std::map<int, int> hullIndexOfPoint;
@@ -142,18 +235,35 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
       ++next;
     }
   }
+  // Orientation and the check against the input, in the coordinates Qhull saw (the
+  // stretch has a positive determinant: it keeps every triangle's orientation).
+  const auto seenVertex = [&](int v) -> const Eigen::Vector3d& { return seen[hull.inputIndex[v]]; };
   const Eigen::Vector3d centroid = [&] {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (const auto& v : hull.vertices) c += v;
+    for (int v = 0; v < int(hull.vertices.size()); ++v) c += seenVertex(v);
     return Eigen::Vector3d(c / double(hull.vertices.size()));
   }();
+  double size = 0;
+  for (const auto& p : seen) size = std::max(size, p.cwiseAbs().maxCoeff());
+  const double outsideAllowed = kOutsideUlps * std::numeric_limits<double>::epsilon() * size;
   std::set<std::pair<int, int>> edges;
   for (auto tri : facets) {
     for (int& id : tri) id = remap[id];
     // Make every triangle face outwards (counter-clockwise seen from outside).
-    const Eigen::Vector3d& a = hull.vertices[tri[0]];
-    const Eigen::Vector3d normal = (hull.vertices[tri[1]] - a).cross(hull.vertices[tri[2]] - a);
-    if (normal.dot(a - centroid) < 0) std::swap(tri[1], tri[2]);
+    const Eigen::Vector3d& a = seenVertex(tri[0]);
+    Eigen::Vector3d normal = (seenVertex(tri[1]) - a).cross(seenVertex(tri[2]) - a);
+    if (normal.dot(a - centroid) < 0) {
+      std::swap(tri[1], tri[2]);
+      normal = -normal;
+    }
+    // Never a wrong hull: every input point inside this triangle's plane.
+    if (const double length = normal.norm(); length > 0) {
+      for (size_t i = 0; i < seen.size(); ++i)
+        if (const double outside = normal.dot(seen[i] - a) / length; outside > outsideAllowed)
+          fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + std::to_string(outside) +
+                          " (of a set " + std::to_string(size) +
+                          " across): the set is too flat for a hull in double; give it volume");
+    }
     hull.triangles.push_back(tri);
     for (int e = 0; e < 3; ++e) {
       const int u = tri[e], v = tri[(e + 1) % 3];

@@ -287,6 +287,29 @@ class Motion {
         moved.motion_);
     return moved;
   }
+  /// The same motion on a clock that reads 0 at time `clock`: `retimed(c).pose(tau)` is
+  /// `pose(c + tau)`, each motion's own start time (and an interpolation's end) moved back
+  /// by `clock`, nothing else changed. A query over \f$[t_0, t_1]\f$ runs on this clock with
+  /// `clock` = \f$t_0\f$ (time_of_impact.hpp), the time-axis twin of `translated`: its times
+  /// are then \f$\tau = t - t_0\f$, whose floating-point spacing is relative to the interval's
+  /// length rather than to \f$|t_0|\f$ (in float at \f$t_0\f$ = 1000 the spacing of t is 6.1e-5,
+  /// of \f$\tau\f$ on an interval 2^-10 long at most 5.8e-11). A motion that starts at `clock`
+  /// gets the start time 0 exactly, and its \f$\tau\f$ is then the query's own.
+  Motion retimed(Scalar clock) const {
+    Motion moved = *this;
+    std::visit(
+        [clock](auto& m) {
+          using M = std::decay_t<decltype(m)>;
+          if constexpr (std::is_same_v<M, PoseInterpolation<Scalar>> || std::is_same_v<M, FreeFlightPath<Scalar>>) {
+            m.t0 -= clock;  // both ends of a motion defined over an interval
+            m.t1 -= clock;
+          } else if constexpr (!std::is_same_v<M, StaticMotion<Scalar>>) {
+            m.t0 -= clock;
+          }
+        },
+        moved.motion_);
+    return moved;
+  }
   /// True for a body that never moves (lets a scene skip its work).
   bool isStatic() const { return std::holds_alternative<StaticMotion<Scalar>>(motion_); }
   /// The alternative held, for code that wants to dispatch on it.

@@ -100,6 +100,14 @@ class DeformingSimplex {
     }
     return moved;
   }
+  /// The same simplex on a clock that reads 0 at time `clock`: its start and end times
+  /// moved back by `clock` (see Motion::retimed).
+  DeformingSimplex retimed(S clock) const {
+    DeformingSimplex moved = *this;
+    moved.t0_ -= clock;
+    moved.t1_ -= clock;
+    return moved;
+  }
   /// Number of vertices.
   int vertexCount() const { return count_; }
   /// Vertex k at t0.

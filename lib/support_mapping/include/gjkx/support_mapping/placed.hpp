@@ -5,6 +5,8 @@
 #include <gjkx/motion/motion.hpp>
 #include <gjkx/support_mapping/support.hpp>
 
+#include <utility>
+
 namespace gjkx {
 
 /// A shape X placed in the world at the pose `worldFromBody` = (R, p).
@@ -74,6 +76,13 @@ struct Moving {
   Vector3<Scalar> support(const Vector3<Scalar>& s, Scalar t) const { return at(t).support(s); }
   /// The same body seen from a frame whose origin sits at `-offset` (Motion::translated).
   Moving translated(const Vector3<Scalar>& offset) const { return Moving{shape, motion.translated(offset)}; }
+  /// The same body on a clock that reads 0 at time `clock` (Motion::retimed).
+  Moving retimed(Scalar clock) const& { return Moving{shape, motion.retimed(clock)}; }
+  /// The same, reusing this body's shape (no copy of a polytope's vertices).
+  Moving retimed(Scalar clock) && {
+    motion = motion.retimed(clock);
+    return std::move(*this);
+  }
   /// The largest acceleration of a point of the body: \f$a + \alpha r + \omega^2 r\f$ with r the
   /// shape's bounding radius about its body origin (the centre of rotation).
   Scalar accelerationBound() const { return motion.bound().pointAcceleration(shape.boundingRadius()); }
