@@ -1082,6 +1082,37 @@ TEMPLATE_TEST_CASE("time of impact on the query's clock: a late start time costs
   }
 }
 
+// The contact data at a time snapped to the caller's clock are GJK's there (ToiSolver::
+// contactAt). The fuzzer's input (corpus finding-toi_snapped_hit_distance_inf): in float on
+// [1000, 1000 + 2^-10], a tetrahedron's vertex sweeps from x = 0.96 to x = -1e6 towards a
+// point at x = -1e6, 6e4 per spacing of the caller's times. The hit lies within the last
+// spacing before t1 and is reported at the latest time before it, 1000.00092, where the
+// bodies are 62501 apart. Those data once came from a complete test there, which succeeded
+// and so stopped GJK early: a hit at distance infinity.
+TEST_CASE("time of impact on the query's clock: a snapped hit reports the distance there", "[toi][hard][clock]") {
+  using S = float;
+  using V = Vector3<S>;
+  const S t0 = 1000, t1 = t0 + S(std::ldexp(1.0, -10));
+  const DeformingSimplex<S> P({V(-0.803009033f, -1, -0.738769531f), V(-1, -1, -1), V(-0.111846924f, -0.507049561f, -0.703979492f),
+                               V(0.958099365f, -1, 0)},
+                              {V(108214.531f, -502442.406f, -0.738769531f), V(129820.781f, -131867.453f, 218077.609f),
+                               V(-0.223693848f, -1.01409912f, -1.40795898f), V(-999999.062f, -1, 0)},
+                              t0, t1);
+  const DeformingSimplex<S> Q({V(-1000000, 0, 0)}, {V(-1000000, -1.00000001e-07f, 5.35491935e-08f)}, t0, t1);
+  ToiSettings<S> settings;
+  settings.collisionTolerance = 1;
+  settings.variant = ExtrusionVariant::Certified;
+  const auto r = timeOfImpact(P, Q, t0, t1, settings);
+  INFO(toString(r.status) << " at " << r.time << ", distance " << r.distance);
+  REQUIRE(r.status == ToiStatus::Hit);
+  REQUIRE(r.time < t1);
+  const auto there = gjk(P.at(r.time), Q.at(r.time));
+  REQUIRE(there.status == GjkStatus::Separated);
+  CHECK(std::isfinite(r.distance));
+  CHECK(double(r.distance) == Approx(double(there.distance)).epsilon(1e-5));
+  CHECK(r.distance >= settings.collisionTolerance);  // before the contact, as the time reported is
+}
+
 // Bad input names the field.
 TEST_CASE("time of impact refuses a bad interval or tolerance", "[toi][input]") {
   const auto P = fixedAt(unitBox<double>(), Vector3<double>(0, 0, 0));
