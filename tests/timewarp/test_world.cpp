@@ -227,3 +227,17 @@ TEST_CASE("world: every run gives the same result") {
     CHECK(first.stateOf(b).velocity == second.stateOf(b).velocity);
   }
 }
+
+TEST_CASE("world: a body turning half a turn within a frame is refused with a clear message") {
+  const Scene scene = parseScene(R"({ "duration": 0.5, "bodies": [
+      { "name": "spinner", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 80] } ] })");
+  World world(scene);
+  try {
+    world.step();
+    FAIL("no error");
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    CHECK(message.find("spinner") != std::string::npos);
+    CHECK(message.find("frame_rate") != std::string::npos);
+  }
+}

@@ -117,6 +117,21 @@ Eigen::Vector3d centreToCentre(const BodyState& si, const BodyState& sj) {
   return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitZ();
 }
 
+/// Free flight over [t0, t1], refused with a clear message when the path cannot hold it:
+/// a free-flight path turns along the shortest arc between its end orientations
+/// (motion.hpp, FreeFlightPath), so a body turning half a turn or more within one step
+/// would be drawn turning the other way.
+FreeFlight flyChecked(const WorldBody& body, const BodyState& state, double t0, double t1, const Eigen::Vector3d& gravity) {
+  FreeFlight path = freeFlight(body.rigid, state, t0, t1, gravity);
+  if (std::holds_alternative<FreeFlightPath<double>>(path.motion.variant()) && path.turnedAngle >= 0.95 * M_PI)
+    throw std::runtime_error("body '" + body.name + "' turns " + std::to_string(path.turnedAngle) +
+                             " rad within one frame (angular speed " + std::to_string(state.angularVelocity.norm()) +
+                             " rad/s): more than the half turn a step can hold; raise frame_rate");
+  if (path.status == FreeFlightStatus::StepCap)
+    throw std::runtime_error("body '" + body.name + "': the free-flight integrator ran out of steps");
+  return path;
+}
+
 std::string bodyField(const BodySpec& body, std::size_t index, const std::string& field) {
   return "body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
 }
@@ -246,7 +261,7 @@ void World::fly(int b, double t0, double t1, FrameState& frame) {
   const BodyState state = renormalized(body.path.stateAt(t0));
   {
     PartTimer timer(frame.report.parts.integration);
-    body.path = freeFlight(body.rigid, state, t0, t1, scene_.gravity);
+    body.path = flyChecked(body, state, t0, t1, scene_.gravity);
   }
   ++body.version;
   auto& pieces = frame.pieces[b];
@@ -522,7 +537,7 @@ void World::resolve(const Hit& hit, FrameState& frame) {
     const double t1 = end - hit.time > 1e-9 ? end : hit.time + 1.0 / scene_.frameRate;
     {
       PartTimer timer(frame.report.parts.integration);
-      body.path = freeFlight(body.rigid, state, hit.time, t1, scene_.gravity);
+      body.path = flyChecked(body, state, hit.time, t1, scene_.gravity);
     }
     ++body.version;
     auto& pieces = frame.pieces[b];
