@@ -122,20 +122,20 @@ struct Story {
 
 Story tell(const Run& r) {
   Story s;
-  bool afterCollision[64] = {};
+  std::vector<bool> afterCollision(r.names.size(), false);
   for (const TraceEvent& e : r.trace) {
     switch (e.kind) {
       case TraceEvent::Kind::Advance: {
         // A new flight from `from` cuts the body's earlier flights that ran past it.
         for (Piece& p : s.pieces)
           if (p.body == e.body && p.keep > e.from + 1e-12) p.keep = std::max(p.start, e.from);
-        s.pieces.push_back({e.body, e.from, e.to, e.to, afterCollision[e.body], 0});
-        afterCollision[e.body] = false;
+        s.pieces.push_back({e.body, e.from, e.to, e.to, afterCollision[std::size_t(e.body)], 0});
+        afterCollision[std::size_t(e.body)] = false;
         break;
       }
       case TraceEvent::Kind::Collision:
         s.collisions.push_back({e.body, e.other, e.to, int(s.collisions.size()) + 1});
-        afterCollision[e.body] = afterCollision[e.other] = true;
+        afterCollision[std::size_t(e.body)] = afterCollision[std::size_t(e.other)] = true;
         break;
       case TraceEvent::Kind::Rollback:
         s.rollbacks.push_back({e.body, e.from, e.to, int(s.collisions.size())});
@@ -302,6 +302,11 @@ void spacetime(const std::string& out, const Run& r) {
          TextStyle{Font::SansBold, 16, palette::ink}, Anchor::Below);
   const Layout L{110, double(W) - 40, 74, 78, 13, kFrames / kFrameRate};
   drawStory(c, H, L, r, s, true, true);
+  // Where a ball's local time stands after the first flight of frame 1, and what the
+  // frame's end means.
+  const double T1 = 1 / kFrameRate;
+  c.text(px.at(L.X(T1), L.Y(4)), "local time of ball5: T_1", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
+  c.text(px.at(L.X(2 * T1), L.Y(4)), "queue empty: frame 2 final", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
   double y = L.y0 + L.rowH * 5 + 52;
   legend(c, H, 110, y, true);
   // What happened, collision by collision, from the trace.
