@@ -1,0 +1,134 @@
+// gjkx_simulate as a user runs it: the example scenes of chapter 07 run to the end and
+// write the documented CSV columns and SUMMARY keys (docs/07_timewarp.md), nothing
+// tunnels; a bad scene is refused before the run, naming the body and the field.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;     // the exit status
+  std::string output;  // standard output and standard error together
+};
+
+// Runs gjkx_simulate (its path passed in by tests/CMakeLists.txt) with `arguments`.
+Result simulate(const std::string& arguments) {
+  const std::string command = std::string("\"") + GJKX_SIMULATE + "\" " + arguments + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+fs::path freshFolder(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("gjkx-simulate-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string firstLine(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+long lineCount(const fs::path& file) {
+  std::ifstream in(file);
+  long n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+// The key=value pairs of the SUMMARY line of `output` (empty if there is none).
+std::map<std::string, std::string> summary(const std::string& output) {
+  std::map<std::string, std::string> keys;
+  const auto at = output.find("SUMMARY ");
+  if (at == std::string::npos) return keys;
+  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
+  for (std::string item; line >> item;) {
+    const auto eq = item.find('=');
+    if (eq != std::string::npos) keys[item.substr(0, eq)] = item.substr(eq + 1);
+  }
+  return keys;
+}
+
+}  // namespace
+
+TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[simulate]") {
+  const fs::path out = freshFolder("cradle");
+  const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/cradle.json\" --out \"" + out.string() + "\" --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  REQUIRE(fs::exists(out / "frames.csv"));
+  REQUIRE(fs::exists(out / "bodies.csv"));
+  CHECK(firstLine(out / "frames.csv") ==
+        "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,max_penetration,"
+        "events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,tunnelled,integration_s,"
+        "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s");
+  CHECK(firstLine(out / "bodies.csv") == "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy");
+  const auto keys = summary(r.output);
+  for (const char* key : {"frames", "sim_s", "wall_s", "collisions", "rollbacks", "brent_mean", "brent_max",
+                          "photo_finish", "max_penetration", "tunnelled"}) {
+    INFO("SUMMARY key " << key);
+    CHECK(keys.count(key) == 1);
+  }
+  REQUIRE(keys.count("frames") == 1);
+  const long frames = std::stol(keys.at("frames"));
+  CHECK(frames == 24);                                     // 1 s at 24 frames per second
+  CHECK(lineCount(out / "frames.csv") == 1 + frames);      // a row per frame
+  CHECK(lineCount(out / "bodies.csv") == 1 + 5 * frames);  // a row per frame and ball
+  CHECK(keys.count("tunnelled") == 1);
+  if (keys.count("tunnelled")) CHECK(keys.at("tunnelled") == "0");
+  // The momentum runs down the row of five: four collisions, each found late and rolled back.
+  if (keys.count("collisions")) CHECK(std::stol(keys.at("collisions")) == 4);
+  fs::remove_all(out);
+}
+
+TEST_CASE("gjkx_simulate runs the other example scenes without tunnelling", "[simulate]") {
+  for (const char* scene : {"ball_drop.json", "dominoes.json"}) {
+    const fs::path out = freshFolder(scene);
+    const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/" + scene + "\" --out \"" + out.string() + "\" --quiet");
+    INFO(scene << ": " << r.output);
+    CHECK(r.status == 0);
+    const auto keys = summary(r.output);
+    REQUIRE(keys.count("tunnelled") == 1);
+    CHECK(keys.at("tunnelled") == "0");
+    fs::remove_all(out);
+  }
+}
+
+TEST_CASE("gjkx_simulate refuses a scene with an unknown key, naming the body and the field", "[simulate]") {
+  const fs::path dir = freshFolder("bad");
+  {
+    std::ofstream scene(dir / "bad.json");
+    scene << R"({ "duration": 1, "bodies": [
+      { "name": "floor", "shape": {"box": [1, 1, 0.5]}, "position": [0, 0, -0.5], "static": true },
+      { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1], "radius": 0.1 } ] })";
+  }
+  const Result r = simulate("\"" + (dir / "bad.json").string() + "\" --out \"" + (dir / "out").string() + "\" --quiet");
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(r.output.find("body 'ball'") != std::string::npos);
+  CHECK(r.output.find("field 'radius'") != std::string::npos);
+  CHECK(r.output.find("SUMMARY") == std::string::npos);  // refused before the run
+  CHECK_FALSE(fs::exists(dir / "out" / "frames.csv"));
+  fs::remove_all(dir);
+}
