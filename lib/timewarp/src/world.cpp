@@ -632,7 +632,7 @@ void World::runToiHeap(double T0, double T1, FrameState& frame) {
     t = earliest.time;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       if (bodies_[b].rigid.isStatic() || int(b) == earliest.i || int(b) == earliest.j) continue;
-      if (t < bodies_[b].path.t1 && t > bodies_[b].path.t0) {
+      if (t < T1 && t > bodies_[b].path.t0) {  // an impact at the frame's very end cuts nothing
         fly(int(b), t, T1, frame);
         ++c.bodiesRolledBack;
       }
