@@ -20,6 +20,14 @@ extern "C" {
 namespace gjkx {
 namespace {
 
+/// A length for a message, in as many digits as it needs (1.2e-13, not 0.000000).
+std::string toText(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+
 [[noreturn]] void fail(const char* field, const std::string& what) {
   throw std::invalid_argument(std::string(field) + ": " + what);
 }
@@ -256,11 +264,15 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
       std::swap(tri[1], tri[2]);
       normal = -normal;
     }
-    // Never a wrong hull: every input point inside this triangle's plane.
+    // Never a wrong hull: every input point inside this triangle's plane. A sliver
+    // triangle (Qhull's triangulation of a merged facet) has a normal whose direction is
+    // only as good as |e1| |e2| / |e1 x e2| round-offs: its allowance grows by that factor.
     if (const double length = normal.norm(); length > 0) {
+      const double edges1 = (seenVertex(tri[1]) - a).norm() * (seenVertex(tri[2]) - a).norm();
+      const double allowed = outsideAllowed * std::max(1.0, edges1 / length);
       for (size_t i = 0; i < seen.size(); ++i)
-        if (const double outside = normal.dot(seen[i] - a) / length; outside > outsideAllowed)
-          fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + std::to_string(outside) +
+        if (const double outside = normal.dot(seen[i] - a) / length; outside > allowed)
+          fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + toText(outside) +
                           " (of a set " + std::to_string(size) +
                           " across): the set is too flat for a hull in double; give it volume");
     }
