@@ -37,6 +37,11 @@ function(gjkx_stage name)
   endif()
   add_library(gjkx::${name} ALIAS gjkx_${name})
   set_property(GLOBAL APPEND PROPERTY GJKX_STAGES ${name})
+  # `cmake --install build --prefix DIR`: the stage's headers and, if it has sources, its library.
+  install(DIRECTORY ${dir}/include/ DESTINATION include)
+  if(sources)
+    install(TARGETS gjkx_${name} ARCHIVE DESTINATION lib)
+  endif()
 endfunction()
 
 # gjkx_chapter(<NN_name> STAGES <stages>...)
