@@ -780,7 +780,8 @@ void World::runChecks(double T0, double T1, FrameState& frame) {
                           frame.collidedPairs.end();
     if (reported) continue;
     const double lipschitz = speedBound(i, frame) + speedBound(j, frame);
-    if (firstInterpenetration([&](double t) { return referenceSignedDistance(bodies_[i], poseAt(i, t), bodies_[j], poseAt(j, t)); },
+    const int a = i, b = j;  // a lambda may not capture structured bindings in C++17
+    if (firstInterpenetration([&](double t) { return referenceSignedDistance(bodies_[a], poseAt(a, t), bodies_[b], poseAt(b, t)); },
                               lipschitz, -2 * scene_.collisionTolerance, T0, T1))
       ++c.tunnelled;
   }
