@@ -228,12 +228,24 @@ TEST_CASE("world: every run gives the same result") {
   }
 }
 
-TEST_CASE("world: a body turning half a turn within a frame is refused with a clear message") {
-  const Scene scene = parseScene(R"({ "duration": 0.5, "bodies": [
+TEST_CASE("world: a fast spinner is flown in intervals of a quarter turn; one too fast for 64 of them is refused") {
+  // A box spinning about its shortest principal axis (z) keeps turning at the same rate:
+  // after 0.5 s at 80 rad/s (3.3 rad a frame, more than a free-flight path holds) it has
+  // turned 40 rad about z. At 10000 rad/s even 64 intervals a frame hold too little.
+  const Scene scene = parseScene(R"({ "duration": 0.5, "gravity": [0, 0, 0], "bodies": [
       { "name": "spinner", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 80] } ] })");
   World world(scene);
+  while (!world.done()) world.step();
+  const BodyState s = world.stateOf(0);
+  const Eigen::Matrix3d expected = Eigen::AngleAxisd(40.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  CHECK((s.worldFromBody.rotation - expected).norm() < 1e-6);
+  CHECK(s.angularVelocity.z() == Approx(80.0));
+
+  const Scene tooFast = parseScene(R"({ "duration": 0.5, "bodies": [
+      { "name": "spinner", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 10000, 0] } ] })");
+  World refused(tooFast);
   try {
-    world.step();
+    refused.step();
     FAIL("no error");
   } catch (const std::runtime_error& e) {
     const std::string message = e.what();

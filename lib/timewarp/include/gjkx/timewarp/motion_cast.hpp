@@ -7,6 +7,8 @@
 
 #include <gjkx/motion/motion.hpp>
 
+#include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace gjkx {
@@ -18,6 +20,14 @@ Pose<To> castPose(const Pose<From>& p) {
   q.rotation = p.rotation.template cast<To>();
   q.translation = p.translation.template cast<To>();
   return q;
+}
+
+/// The end of an interval rounded to To, kept after its rounded start: an interval shorter
+/// than To's spacing there would otherwise round to nothing.
+template <typename To, typename From>
+To laterThan(To t0, From t1) {
+  const To rounded = To(t1);
+  return rounded > t0 ? rounded : std::nextafter(t0, std::numeric_limits<To>::infinity());
 }
 
 /// A motion in the scalar type To (the same alternative, its numbers rounded to To).
@@ -40,12 +50,12 @@ Motion<To> castMotion(const Motion<From>& motion) {
             return Motion<To>::screw(castPose<To>(m.start), m.velocity.template cast<To>(),
                                      m.angularVelocity.template cast<To>(), To(m.t0));
           } else if constexpr (std::is_same_v<M, PoseInterpolation<From>>) {
-            return Motion<To>::interpolate(castPose<To>(m.from), castPose<To>(m.to), To(m.t0), To(m.t1));
+            return Motion<To>::interpolate(castPose<To>(m.from), castPose<To>(m.to), To(m.t0), laterThan(To(m.t0), m.t1));
           } else {
             static_assert(std::is_same_v<M, FreeFlightPath<From>>, "castMotion: a motion alternative is missing");
             return Motion<To>::freeFlight(castPose<To>(m.start), m.velocity.template cast<To>(),
                                           m.acceleration.template cast<To>(), m.endRotation.template cast<To>(),
-                                          To(m.t0), To(m.t1));
+                                          To(m.t0), laterThan(To(m.t0), m.t1));
           }
         },
         motion.variant());

@@ -185,6 +185,7 @@ class World {
   ImpulseSettings impulse_;
   int frame_ = 0;
   int frameCount_ = 0;
+  double intervalEnd_ = 0;  // the end of the interval an ordering is running (the frame's end, or a part of it)
   std::vector<TraceEvent> trace_;
   std::vector<std::array<double, 3>> collisionLog_;
   /// Per pair of mesh bodies, the body-pair query that keeps its front between frames (kdop).
