@@ -54,7 +54,8 @@ Color intervalColor(std::size_t k) {
   return colors[k % 5];
 }
 Color kindColor(BrentStepKind kind) {  // in the order of BrentStepKind
-  static const Color colors[] = {Color::hex(0x9E9E9E), palette::ink, palette::highlight, Color::hex(0xCC79A7)};
+  static const Color colors[] = {Color::hex(0x9E9E9E), palette::ink, palette::highlight, Color::hex(0xCC79A7),
+                                 Color::hex(0x009E73)};
   return colors[static_cast<int>(kind)];
 }
 

@@ -1,6 +1,8 @@
 // The contact patch of two bodies (contact.hpp).
 #include <gjkx/timewarp/contact.hpp>
 
+#include <algorithm>
+#include <limits>
 #include <type_traits>
 
 namespace gjkx {
@@ -58,16 +60,34 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d>& points) {
 
 }  // namespace
 
-Eigen::Vector3d contactPoint(const Shape<double>& shapeA, const Pose<double>& poseA, const Shape<double>& shapeB,
-                             const Pose<double>& poseB, const Eigen::Vector3d& pointA, const Eigen::Vector3d& pointB,
-                             const Eigen::Vector3d& normal, double depth) {
+ContactPatch contactPatch(const Shape<double>& shapeA, const Pose<double>& poseA, const Shape<double>& shapeB,
+                          const Pose<double>& poseB, const Eigen::Vector3d& pointA, const Eigen::Vector3d& pointB,
+                          const Eigen::Vector3d& normal, double depth) {
   const Eigen::Vector3d middle = 0.5 * (pointA + pointB);
   const auto featureA = touchingFeature(shapeA, poseA, normal, depth);
   const auto featureB = touchingFeature(shapeB, poseB, -normal, depth);
-  const auto& patch = diameter(featureA) <= diameter(featureB) ? featureA : featureB;
-  if (patch.empty()) return middle;
-  const Eigen::Vector3d c = centroid(patch);
-  return c + normal * normal.dot(middle - c);  // onto the plane midway between the closest points
+  // The closest points lie on the touching features, so a feature that does not reach
+  // them is no contact: a corner of a floor 6 m wide is within `depth` of its top plane
+  // along a normal tilted by 1e-4 (float's noise), but it touches nothing.
+  const auto reaches = [&](const std::vector<Eigen::Vector3d>& feature) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& p : feature) nearest = std::min(nearest, ((p - middle) - normal * normal.dot(p - middle)).norm());
+    return nearest <= diameter(feature) + 2 * depth;
+  };
+  const bool a = reaches(featureA), b = reaches(featureB);
+  static const std::vector<Eigen::Vector3d> none;
+  const auto& patch = a && b ? (diameter(featureA) <= diameter(featureB) ? featureA : featureB)
+                             : a ? featureA : b ? featureB : none;
+  ContactPatch out;
+  if (patch.empty()) {
+    out.centre = middle;
+    out.points = {middle};
+    return out;
+  }
+  // Onto the plane midway between the closest points.
+  for (const auto& p : patch) out.points.push_back(p + normal * normal.dot(middle - p));
+  out.centre = centroid(out.points);
+  return out;
 }
 
 }  // namespace gjkx

@@ -36,6 +36,7 @@ enum class BrentStepKind {
   Secant,                  ///< linear interpolation through a and b
   InverseQuadratic,        ///< inverse quadratic interpolation through a, b and c
   MinimalStep,             ///< the interpolated step was below the tolerance: step by the tolerance
+  Leap,                    ///< not Brent's own: the time-of-impact solver's leap past a creeping restart (time_of_impact.hpp)
 };
 
 /// The name of a step kind, for traces.
@@ -45,6 +46,7 @@ inline const char* toString(BrentStepKind kind) {
     case BrentStepKind::Secant: return "secant";
     case BrentStepKind::InverseQuadratic: return "inverse-quadratic";
     case BrentStepKind::MinimalStep: return "minimal-step";
+    case BrentStepKind::Leap: return "leap";
   }
   return "?";
 }

@@ -54,6 +54,9 @@
 /// creep towards a far t1 one restart at a time.
 #pragma once
 
+#include <optional>
+#include <utility>
+
 #include <gjkx/brent/root_finder.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
@@ -265,11 +268,12 @@ class ToiSolver {
     if (last_.status != ExtrusionStatus::Undecided) return verdictOfFirstTest();
     for (;;) {  // one Brent run per interval [ta, t1]: the first, then one per restart
       if (last_.separating.count == 0) return hit(ta_, last_);
-      BrentStepper<S> brent = bracket();
+      std::optional<BrentIterate> leap;
+      BrentStepper<S> brent = bracket(leap);
       for (;;) {
         if (brent.converged()) return hitOnConvergedBracket(brent);
         if (result_.brentIterations >= settings_.maxIterations) return iterationCap();
-        const BrentIterate x = brentStep(brent);
+        const BrentIterate x = leap ? *std::exchange(leap, std::nullopt) : brentStep(brent);
         if (!x.separates) {  // §5's "negative": Brent goes on with F(tx) < 0
           brent.update(x.approximateMaxSd - tol_);
           continue;
@@ -402,13 +406,33 @@ class ToiSolver {
   ///   extrapolate to the tolerance (a secant on the distance). The distance bends towards
   ///   contact there, so this lies past the contact, where F < 0. (Where the restart came at
   ///   F's root, as under linear motion, it would lie short: not tried.)
-  BrentStepper<S> bracket() {
+  ///
+  /// A secant can also creep towards a near miss: where the distance has a minimum just
+  /// above the tolerance (two resting bodies that rock, a grazing pass), F has no root, and
+  /// each restart lands a little short of the minimum, ever closer (a rocking box: 74
+  /// restarts, each a fifth shorter than the last). So after a restart that advanced less
+  /// than a quarter of what is left of the bracket, the solver also *leaps* twice that
+  /// advance ahead (`leap`): where the new vectors still separate by the tolerance, the leap
+  /// is an iterate like any other (proven free of contact, a complete test follows), and
+  /// the advances double until they pass the minimum; where they do not, the leap is the
+  /// bracket's far end, and Brent works on a bracket that short.
+  BrentStepper<S> bracket(std::optional<BrentIterate>& leap) {
     const S distanceAtTa = last_.distanceAtStart;
     S high = t1_, fHigh = std::min(approximateMaxSdAtT1() - tol_, S(0));
     tryNearerFarEnd(previousHigh_, high, fHigh);
     if (creeping_ && distanceBefore_ > distanceAtTa)
       tryNearerFarEnd(ta_ + (distanceAtTa - tol_) * ((ta_ - taBefore_) / (distanceBefore_ - distanceAtTa)), high,
                       fHigh);
+    const S advance = ta_ - taBefore_;
+    if (result_.restarts > 0 && advance < S(0.25) * (high - ta_) && result_.brentIterations < settings_.maxIterations) {
+      BrentIterate x = iterateAt(ta_ + 2 * advance, BrentStepKind::Leap, ta_, high);
+      if (x.separates) {
+        leap = std::move(x);
+      } else {
+        high = x.t;
+        fHigh = x.approximateMaxSd - tol_;
+      }
+    }
     return BrentStepper<S>(ta_, distanceAtTa - tol_, high, fHigh, timeTolerance_);
   }
 
@@ -428,15 +452,20 @@ class ToiSolver {
   /// above 0: only then are the bodies proven no closer than the tolerance on all of
   /// \f$[t_a, t_x]\f$ (see the file comment). Records the step in the trace.
   BrentIterate brentStep(const BrentStepper<S>& brent) {
-    const S tx = brent.next();
+    return iterateAt(brent.next(), brent.nextKind(), ta_, std::max(brent.root(), brent.counterpart()));
+  }
+
+  /// An iterate at `tx`, chosen by the rule `kind` in the bracket [low, high]: the bodies
+  /// placed there and the approximate maximum SD there. Counted as a Brent iteration
+  /// (an evaluation of F) and recorded in the trace.
+  BrentIterate iterateAt(S tx, BrentStepKind kind, S low, S high) {
     ++result_.brentIterations;
     BrentIterate x{tx, P_.at(tx), Q_.at(tx)};
     x.approximateMaxSd = approximateMaxSd(x.P, x.Q, tx);
     x.separates = x.approximateMaxSd >= tol_;
     if (trace_)
-      trace_->steps.push_back(ToiStep<S>{callerTime(tx), x.approximateMaxSd, callerTime(ta_),
-                                         callerTime(std::max(brent.root(), brent.counterpart())), brent.nextKind(),
-                                         x.separates});
+      trace_->steps.push_back(
+          ToiStep<S>{callerTime(tx), x.approximateMaxSd, callerTime(low), callerTime(high), kind, x.separates});
     return x;
   }
 

@@ -23,10 +23,18 @@ namespace gjkx {
 std::vector<Eigen::Vector3d> touchingFeature(const Shape<double>& shape, const Pose<double>& pose,
                                              const Eigen::Vector3d& direction, double depth);
 
-/// The contact point of A and B given their closest points `pointA`, `pointB` and the unit
+/// The contact patch of two bodies: where an impulse acts, and the patch it stands for.
+struct ContactPatch {
+  /// The patch's centroid on the plane midway between the closest points (see the file comment).
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  /// The points of the smaller touching feature, on that plane (the centre alone when empty).
+  std::vector<Eigen::Vector3d> points;
+};
+
+/// The contact patch of A and B given their closest points `pointA`, `pointB` and the unit
 /// normal from A towards B (see the file comment).
-Eigen::Vector3d contactPoint(const Shape<double>& shapeA, const Pose<double>& poseA, const Shape<double>& shapeB,
-                             const Pose<double>& poseB, const Eigen::Vector3d& pointA, const Eigen::Vector3d& pointB,
-                             const Eigen::Vector3d& normal, double depth);
+ContactPatch contactPatch(const Shape<double>& shapeA, const Pose<double>& poseA, const Shape<double>& shapeB,
+                          const Pose<double>& poseB, const Eigen::Vector3d& pointA, const Eigen::Vector3d& pointB,
+                          const Eigen::Vector3d& normal, double depth);
 
 }  // namespace gjkx
