@@ -9,6 +9,8 @@
 //          lines normal to s_i, and the vertex sets V_P and V_Q kept after the step;
 //   right: the Minkowski difference V_Q - V_P, the origin, s_i, the new vertex
 //          w_i = S_Q(-s_i) - S_P(s_i), the simplex kept (thick) and its closest point z.
+// Each left panel's title says whether s_i is a separating vector (SD > 0, §2.3): here
+// s_1 to s_5 are, s_0 is not.
 // The run is the one tests/gjk/test_gjk_figure2_steps.cpp replays by hand.
 #include "../chapter.hpp"
 
@@ -25,6 +27,9 @@ using V = Vector3<double>;
 using chapter::xy;
 
 namespace {
+
+constexpr double kHalo = 3.0;  // pixels of background behind a label, so lines under it do not cut it
+constexpr TextStyle haloLabel{Font::Math, style::labelSize, palette::ink, kHalo, palette::background};
 
 std::string fixed(double x, int digits = 2) {
   char buffer[32];
@@ -43,7 +48,9 @@ void supportingLine(Canvas& canvas, const V& through, const V& s, const Stroke& 
 void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double>& Q, const GjkIteration<double>& it) {
   canvas.setWorldWindow(-1, 15, -3.4, 10.5);
   canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
-  canvas.title("i = " + std::to_string(it.i) + ":  V_P and V_Q");
+  // §2.3: "If this distance is positive, then s_i is called a separating vector".
+  canvas.title("i = " + std::to_string(it.i) + ":  V_P and V_Q,  s_" + std::to_string(it.i) +
+               (it.supportingDistance > 0 ? " separates" : " does not separate"));
   canvas.polygon(xy(P.vertices()), style::bodyP);
   canvas.polygon(xy(Q.vertices()), style::bodyQ);
   canvas.text(xy(P.center()), "P", TextStyle{Font::Math, 22, palette::bodyPStroke});
@@ -53,7 +60,7 @@ void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double
   supportingLine(canvas, it.supportQ, it.s, Stroke{palette::bodyQStroke, 1.2, style::dashed});
   canvas.arrow(xy(it.supportP), xy(it.supportP) + 2.2 * xy(it.s).normalized(), style::directionStroke);
   canvas.text(xy(it.supportP) + 2.2 * xy(it.s).normalized(), "s_" + std::to_string(it.i),
-              TextStyle{Font::Math, style::labelSize, palette::direction}, chapter::toward(xy(it.s)));
+              TextStyle{Font::Math, style::labelSize, palette::direction, kHalo}, chapter::toward(xy(it.s)));
   // V_P and V_Q: the support points the simplex keeps.
   std::vector<Eigen::Vector2d> vp, vq;
   for (int k = 0; k < it.simplex.size; ++k) {
@@ -68,9 +75,16 @@ void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double
   for (const auto& q : vq) canvas.point(q, palette::bodyQStroke, 4.5);
   canvas.point(xy(it.supportP), palette::background, 6, Stroke{palette::bodyPStroke, 2});
   canvas.point(xy(it.supportQ), palette::background, 6, Stroke{palette::bodyQStroke, 2});
-  // Each support point's label goes into its own body, away from the other.
-  canvas.text(xy(it.supportP), "S_P(s_" + std::to_string(it.i) + ")", mathLabel, chapter::toward(-xy(it.s)));
-  canvas.text(xy(it.supportQ), "S_Q(-s_" + std::to_string(it.i) + ")", mathLabel, chapter::toward(xy(it.s)));
+  // Each support point's label goes beside its point along the supporting line (P's on the
+  // lower side, Q's on the upper), over a halo so the outlines and dashed lines under it do
+  // not cut the letters; tilted into the body, away from s_i's arrow, unless the line is
+  // level, when the body's edge lies along it and the label goes outside, under (over) it.
+  const Eigen::Vector2d unit = xy(it.s).normalized(), along(-unit.y(), unit.x());
+  const bool level = std::abs(along.y()) < 0.3;
+  const Eigen::Vector2d sideP = level ? Eigen::Vector2d(std::abs(along.x()), 0) : along.y() < 0 ? along : Eigen::Vector2d(-along);
+  const double tilt = level ? 0.6 : -0.6;
+  canvas.text(xy(it.supportP), "S_P(s_" + std::to_string(it.i) + ")", haloLabel, chapter::toward(sideP + tilt * unit));
+  canvas.text(xy(it.supportQ), "S_Q(-s_" + std::to_string(it.i) + ")", haloLabel, chapter::toward(-sideP - tilt * unit));
   if (it.step == GjkStep::Converged) {  // the closest points, joined
     canvas.line(xy(it.simplex.witnessP()), xy(it.simplex.witnessQ()), Stroke{palette::ink, 1.5, style::dotted});
     canvas.point(xy(it.simplex.witnessP()), palette::witness, 4);
@@ -93,7 +107,7 @@ void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIte
   const Eigen::Vector2d sUnit = xy(it.s).normalized();
   const double arrowLength = std::min(2.5, xy(it.s).norm());
   canvas.arrow({0, 0}, arrowLength * sUnit, style::directionStroke);
-  canvas.text(arrowLength * sUnit, "s_" + std::to_string(it.i), TextStyle{Font::Math, style::labelSize, palette::direction},
+  canvas.text(arrowLength * sUnit, "s_" + std::to_string(it.i), TextStyle{Font::Math, style::labelSize, palette::direction, kHalo},
               it.s.y() < 0 ? Anchor::Left : Anchor::Below);
   // The simplex kept: the feature of V_Z closest to the origin.
   std::vector<Eigen::Vector2d> kept;
@@ -102,10 +116,17 @@ void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIte
   if (kept.size() == 2) canvas.line(kept[0], kept[1], style::simplexStroke);
   for (const auto& k : kept) canvas.point(k, palette::simplex, 4);
   canvas.point(xy(w), palette::background, 6, Stroke{palette::highlight, 2.5});
-  canvas.text(xy(w), "w_" + std::to_string(it.i), mathLabel, Anchor::AboveRight);
   canvas.line({0, 0}, xy(it.z), Stroke{palette::ink, 1.0, style::dotted});
   canvas.point(xy(it.z), palette::witness, 4.5);
-  canvas.text(xy(it.z), "z", mathLabel, Anchor::AboveLeft);
+  // w_i and z: one label when they are the same point (the first iteration); else w_i's
+  // to the right, on V_Q - V_P, and z's to the left, on the origin's side.
+  const std::string wName = "w_" + std::to_string(it.i);
+  if ((xy(w) - xy(it.z)).norm() < 0.3) {
+    canvas.text(xy(w), "z = " + wName, haloLabel, Anchor::AboveRight);
+  } else {
+    canvas.text(xy(w), wName, haloLabel, Anchor::Right);
+    canvas.text(xy(it.z), "z", haloLabel, Anchor::Left);
+  }
 }
 
 }  // namespace

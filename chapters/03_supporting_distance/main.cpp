@@ -60,15 +60,24 @@ void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const 
   const V unit = s.normalized();
   const V sp = P.support(unit), sq = Q.support(-unit);
   const double sd = supportingDistance(P, Q, unit);
-  const Eigen::Vector2d along(-unit.y(), unit.x());
-  for (const V& through : {sp, sq}) canvas.line(xy(through) - 30 * along, xy(through) + 30 * along, style::separatingStroke);
+  const V along(-unit.y(), unit.x(), 0);
+  for (const V& through : {sp, sq}) canvas.line(xy(through) - 30 * xy(along), xy(through) + 30 * xy(along), style::separatingStroke);
   const Color color = sd > 0 ? palette::direction : palette::penetration;
-  // The gap, drawn beside S_P(s) so it does not hide the bodies' contact.
-  const Eigen::Vector2d from = xy(sp) + 0.8 * along, to = from + sd * xy(unit);
+  // The gap, drawn between the supporting lines beyond both bodies (past the furthest
+  // point of either along the lines), so it hides neither body nor the contact.
+  const double reach = std::max(along.dot(P.support(along)), along.dot(Q.support(along)));
+  const Eigen::Vector2d from = xy(sp) + (reach - along.dot(sp) + 0.6) * xy(along), to = from + sd * xy(unit);
   canvas.arrow(from, to, Stroke{color, style::lineThick});
   canvas.arrow(to, from, Stroke{color, style::lineThick});
-  canvas.text(0.5 * (from + to), "SD = " + fixed(sd), TextStyle{Font::Math, style::labelSize, color, 3.0},
-              chapter::toward(along));
+  // Its value beside it, outward; when outward is down and to the left (towards the
+  // panel's edge), over the arrow's upper end instead.
+  const TextStyle valueStyle{Font::Math, style::labelSize, color, 3.0, palette::background};
+  if (along.y() < 0) {
+    const Eigen::Vector2d upper = from.y() > to.y() ? from : to;
+    canvas.text(upper, "SD = " + fixed(sd), valueStyle, Anchor::AboveRight);
+  } else {
+    canvas.text(0.5 * (from + to) + 0.3 * xy(along), "SD = " + fixed(sd), valueStyle, chapter::toward(xy(along)));
+  }
   // s itself, drawn from the panel's lower left corner.
   const Eigen::Vector2d corner(-1.2, -2.2);
   canvas.arrow(corner, corner + 1.6 * xy(unit), style::directionStroke);
@@ -76,12 +85,21 @@ void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const 
               chapter::toward(xy(unit)));
   canvas.point(xy(sp), palette::bodyPStroke, 4.5);
   canvas.point(xy(sq), palette::bodyQStroke, 4.5);
-  canvas.text(xy(sp), "S_P(" + name + ")", mathLabel, chapter::toward(-xy(unit) - along));
-  canvas.text(xy(sq), "S_Q(-" + name + ")", mathLabel, chapter::toward(xy(unit) - along));
+  // The support points' names on the side away from the gap's arrow, over a halo.
+  const TextStyle label{Font::Math, style::labelSize, palette::ink, 3.0, palette::background};
+  canvas.text(xy(sp), "S_P(" + name + ")", label, chapter::toward(-xy(unit) - 1.5 * xy(along)));
+  canvas.text(xy(sq), "S_Q(-" + name + ")", label, chapter::toward(xy(unit) - 1.5 * xy(along)));
 }
 
 // SD over the angle of s in [0, 2 pi), scaled so the plot fills the panel.
-void drawProfile(Canvas& canvas, const Body& P, const Body& Q, const std::vector<std::pair<double, std::string>>& marks) {
+// A marked direction of a profile: its angle, its name, and where its name goes.
+struct Mark {
+  double angle;
+  std::string label;
+  Anchor anchor;
+};
+
+void drawProfile(Canvas& canvas, const Body& P, const Body& Q, const std::vector<Mark>& marks) {
   std::vector<double> sd(kSamples);
   double lo = 0, hi = 0;
   for (int k = 0; k < kSamples; ++k) {
@@ -104,13 +122,12 @@ void drawProfile(Canvas& canvas, const Body& P, const Body& Q, const std::vector
     canvas.text(at(angle, 0), tick, smallText, angle > M_PI ? Anchor::BelowLeft : Anchor::BelowRight);
   }
   canvas.text(at(0, hi + 0.2 * (hi - lo)), "SD", mathLabel, Anchor::Left);
-  for (const auto& [angle, label] : marks) {
-    const double value = supportingDistance(P, Q, direction(angle));
+  for (const Mark& mark : marks) {
+    const double value = supportingDistance(P, Q, direction(mark.angle));
     const Color color = value > 0 ? palette::direction : palette::penetration;
-    canvas.line(at(angle, 0), at(angle, value), Stroke{color, 1.0, style::dotted});
-    canvas.point(at(angle, value), color, 4.5);
-    canvas.text(at(angle, value), label, TextStyle{Font::Math, style::labelSize, color, 3.0},
-                value > 0 ? Anchor::Above : Anchor::Below);
+    canvas.line(at(mark.angle, 0), at(mark.angle, value), Stroke{color, 1.0, style::dotted});
+    canvas.point(at(mark.angle, value), color, 4.5);
+    canvas.text(at(mark.angle, value), mark.label, TextStyle{Font::Math, style::labelSize, color, 3.0}, mark.anchor);
   }
 }
 
@@ -158,8 +175,9 @@ int main(int argc, char** argv) {
   drawSupportingDistance(canvas, P, Qapart, direction(otherAngle), "s_b");
 
   panel(2, 0, "(c) SD(P, Q, s) over all directions");
+  // The maximum lies just before s_a: its name goes to the left, s_a's to the right.
   drawProfile(canvas, P, Qapart,
-              {{separatingAngle, "s_a"}, {otherAngle, "s_b"}, {angleOf(bestApart.direction), "max"}});
+              {{separatingAngle, "s_a", Anchor::AboveRight}, {otherAngle, "s_b", Anchor::Left}, {angleOf(bestApart.direction), "max", Anchor::AboveLeft}});
 
   panel(0, 1, "(d) disjoint: max SD = distance = " + fixed(bestApart.value));
   canvas.setWorldWindow(-2, 11, -3, 6);
@@ -175,7 +193,7 @@ int main(int argc, char** argv) {
   drawSupportingDistance(canvas, P, Qinside, bestInside.direction, "s");
 
   panel(2, 1, "(f) intersecting: SD < 0 in every direction");
-  drawProfile(canvas, P, Qinside, {{angleOf(bestInside.direction), "max"}});
+  drawProfile(canvas, P, Qinside, {{angleOf(bestInside.direction), "max", Anchor::AboveRight}});
 
   const std::string path = out + "/fig03-supporting-distance.png";
   canvas.savePng(path);

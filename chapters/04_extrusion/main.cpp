@@ -70,13 +70,26 @@ struct Pair {
   double xmin, xmax, ymin, ymax;
 };
 
-// A body at time t: faint (in between), outlined (t_0), filled (t_1), or at the time of impact.
+// The colour of time t in [t_0, t_1], shared by both bodies, so that the poses of P and Q
+// at the same instant are seen as a pair: dark purple at t_0 through blue to green at t_1
+// (three stops of the viridis ramp, which stays readable on white and in grey).
+Color timeColour(double t) {
+  static const Color stops[] = {Color::hex(0x440154), Color::hex(0x31688e), Color::hex(0x35b779)};
+  const double x = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0) * 2;
+  const int k = std::min(1, int(x));
+  const double f = x - k;
+  const Color &a = stops[k], &b = stops[k + 1];
+  return Color{a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), 1.0};
+}
+
+// A body at time t: in between (outlined in its time's colour), outlined (t_0), filled
+// (t_1), or at the time of impact.
 enum class Look { Faint, Start, End, Impact };
 void drawBody(Canvas& c, const Body& b, double t, bool isP, Look look) {
   const Color stroke = isP ? palette::bodyPStroke : palette::bodyQStroke;
   const Color fill = isP ? palette::bodyPFill : palette::bodyQFill;
   ShapeStyle shape{fill, Stroke{stroke, style::lineThin}};
-  if (look == Look::Faint) shape = ShapeStyle{fill.withAlpha(0.07), Stroke{stroke.withAlpha(0.3), 1.0}};
+  if (look == Look::Faint) shape = ShapeStyle{timeColour(t).withAlpha(0.05), Stroke{timeColour(t).withAlpha(0.75), 1.3}};
   if (look == Look::Start) shape.fill = palette::none;
   if (look == Look::Impact) shape = ShapeStyle{palette::highlight.withAlpha(0.45), Stroke{stroke, style::lineThick}};
   std::vector<P2> outline;
@@ -100,12 +113,31 @@ void drawMotion(Canvas& c, const Body& b, const std::string& name, const V& side
   c.text(xy(b.at(t1).support(side)), name + "(t_1)", label, chapter::toward(xy(side)));
 }
 
-// Both bodies at t_0 and t_1, `between` - 1 faint poses in between, and their motions.
+// The key of the time colours: a bar from t_0 to t_1 in the panel's lower left corner,
+// with a tick at each pose in between.
+void drawTimeKey(Canvas& c, const Pair& pair, int between) {
+  const double w = pair.xmax - pair.xmin, h = pair.ymax - pair.ymin;
+  const P2 from(pair.xmin + 0.05 * w, pair.ymin + 0.05 * h), to = from + P2(0.25 * w, 0);
+  constexpr int pieces = 40;
+  for (int k = 0; k < pieces; ++k)
+    c.line(from + (to - from) * k / pieces, from + (to - from) * (k + 1) / pieces, Stroke{timeColour(t0 + (t1 - t0) * (k + 0.5) / pieces), 5});
+  for (int k = 1; k < between; ++k) {
+    const P2 at = from + (to - from) * k / between;
+    c.line(at + P2(0, 0.012 * h), at + P2(0, 0.035 * h), Stroke{timeColour(t0 + (t1 - t0) * k / between), 1.5});
+  }
+  const TextStyle small{Font::Math, 13, palette::ink, 2.0, palette::background};
+  c.text(from, "t_0", small, Anchor::Left);
+  c.text(to, "t_1", small, Anchor::Right);
+}
+
+// Both bodies at t_0 and t_1, `between` - 1 poses in between (both bodies' poses at the same
+// instant outlined in that instant's colour, with the key), and their motions.
 void drawPair(Canvas& c, const Pair& pair, int between) {
   c.setWorldWindow(pair.xmin, pair.xmax, pair.ymin, pair.ymax);
   c.setClip(c.plotArea());
   for (int k = 1; k < between; ++k)
     for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t0 + (t1 - t0) * k / between, b == &pair.P, Look::Faint);
+  if (between > 1) drawTimeKey(c, pair, between);
   for (const auto& [t, look] : {std::pair{t0, Look::Start}, std::pair{t1, Look::End}})
     for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t, b == &pair.P, look);
   drawMotion(c, pair.P, "P", pair.sideP, true);

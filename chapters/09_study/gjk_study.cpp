@@ -4,16 +4,20 @@
 // with the RATIO lines (ours-double median time / the best peer's, measured in this run).
 //
 //   gjk_study [--out DIR] [--quick] [--seed N]
+//   gjk_study --replot [--out DIR]
 //
 // Writes into DIR (default figures/study):
 // - gjk-table.md, gjk-float-vs-double.md: the tables of stdout as markdown (the docs page
 //   of the study includes them);
 // - per workload group (distance cold, distance warm, boolean cold, boolean warm):
 //   gjk-<group>.csv and .gp, and gjk-<group>.png when gnuplot is installed: one panel per
-//   shape, error (log) against median time per query (log), one point per method. For
-//   distance queries the point is the median error |d - d_ref| and its bar reaches the
-//   maximum; for boolean queries the point is the rate of wrong answers. An error of 0
-//   cannot sit on a log axis: it is drawn at a floor, which the figure states.
+//   shape. Distance queries: error (log) against median time per query (log), one point
+//   per method, the median error |d - d_ref| with a bar to the maximum (an error of 0
+//   cannot sit on a log axis: it is drawn at a floor, which the figure states), a cross
+//   over a method that left queries unanswered. Boolean queries (a yes/no answer has no
+//   error): one row per method, the median time per query with a whisker to the 99th
+//   percentile, the wrong answers and unanswered queries counted beside it.
+// --replot measures nothing and redraws the plots from the CSV files already in DIR.
 // A full run takes about 25 s of processor time (51 s of wall time on the shared 2-core
 // machine at half a core), --quick a few seconds. Regenerate the kept figures with
 // `build/chapters/09_study/gjk_study --out figures/study`.
@@ -31,6 +35,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,6 +46,7 @@ namespace {
 
 struct Options {
   std::string out = "figures/study";
+  bool replot = false;
   gjkx::study::gjk_comparison::GjkStudyOptions study;
 };
 
@@ -50,6 +56,7 @@ Options parse(int argc, char** argv) {
   app.add_option("--out", o.out, "the folder for the plots and markdown tables")->type_name("DIR")->capture_default_str();
   app.add_flag("--quick", o.study.quick, "a short run: fewer pairs and repetitions");
   app.add_option("--seed", o.study.seed, "seed of the shapes and poses")->type_name("N")->capture_default_str();
+  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots from the gjk-<group>.csv files already in DIR");
   chapter::parseOrExit(app, argc, argv);
   return o;
 }
@@ -311,8 +318,8 @@ void placeLabels(std::vector<PlotPoint*>& points, const PanelAxes& axes) {
 
 // Tics at 1, 2, 5 times the powers of ten inside [lo, hi] (only the powers when that is
 // too many to fit), so that a panel spanning less than a decade still has numbers on its x axis.
-std::string xTics(double lo, double hi) {
-  for (const bool coarse : {false, true}) {
+std::string xTics(double lo, double hi, bool powersOnly = false) {
+  for (const bool coarse : {powersOnly, true}) {
     std::vector<double> tics;
     for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
       for (const double m : {1.0, 2.0, 5.0})
@@ -324,6 +331,65 @@ std::string xTics(double lo, double hi) {
     }
   }
   return "";
+}
+
+// The plot of a boolean group: a yes/no answer has no error to plot, so each panel (one
+// per shape) puts the methods one per row, the median time per query as the point and a
+// whisker out to the 99th percentile (log time axis), and at the right of each row the
+// wrong answers among the judged queries (red when any) and the queries left unanswered.
+void writeTimePlot(const std::string& base, const std::string& name, const Group& g, const std::vector<std::string>& shapes,
+                   const std::vector<std::string>& methods, std::map<std::string, int>& queries, const std::vector<PlotPoint>& points) {
+  const std::string csvName = name + ".csv";
+  const int panelRows = int((shapes.size() + kColumns - 1) / kColumns);
+  const double panelW = kImageW / kColumns, panelH = (kPanelsTop - kPanelsBottom) * kImageH / panelRows;
+  constexpr double leftPx = 110;  // room for the method names
+  std::ofstream gp(base + ".gp");
+  gp << "# gnuplot script written by gjk_study (chapter 09): gnuplot " << name << ".gp\n";
+  gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
+  gp << "set output '" << name << ".png'\n";
+  gp << "set datafile separator ','\nset termoption noenhanced\n";
+  gp << "set multiplot title \"GJK, " << g.title
+     << ": median time per query (point) and 99th percentile (whisker) per method, one panel per shape; wrong answers counted at the right\"\n";
+  gp << "set logscale x\nset grid xtics\nunset key\nset xlabel 'time per query (ns)' offset 0,0.3\n";
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    double lo = 0, hi = 0;
+    std::string tics;
+    for (const auto& p : points)
+      if (p.panel == int(s)) {
+        lo = lo == 0 ? p.row->medianNs : std::min(lo, p.row->medianNs);
+        hi = std::max(hi, p.row->p99Ns);
+        tics += (tics.empty() ? "" : ", ") + std::string("'") + p.row->method + "' " + std::to_string(p.method);
+      }
+    // The data take the left two thirds of the axis; the counts sit in the last third.
+    const double xLo = lo / 1.4, dataHi = hi * 1.4, xHi = xLo * std::pow(dataHi / xLo, 1.5), countX = xLo * std::pow(dataHi / xLo, 1.07);
+    const double left = double(s % kColumns) * panelW, bottom = (1 - kPanelsTop) * kImageH + double(s / kColumns + 1) * panelH;
+    gp << "set lmargin at screen " << (left + leftPx) / kImageW << "\nset rmargin at screen " << (left + panelW - kRightPx) / kImageW << "\n";
+    gp << "set bmargin at screen " << 1 - (bottom - kBottomPx) / kImageH << "\nset tmargin at screen " << 1 - (bottom - panelH + kTopPx) / kImageH
+       << "\n";
+    // Tics at the powers of ten only when the data span more than a decade and a half (the
+    // data have two thirds of the panel's width).
+    gp << "set xtics (" << (std::log10(dataHi / xLo) > 1.5 ? xTics(xLo, dataHi, true) : xTics(xLo, dataHi)) << ")\n";
+    gp << "set xrange [" << xLo << ":" << xHi << "]\nset yrange [" << double(methods.size()) - 0.4 << ":-0.6]\n";
+    gp << "set ytics (" << tics << ") font ',9'\n";
+    gp << "set title '" << shapes[s] << " (" << queries[shapes[s]] << " queries)' offset 0,-0.6\n";
+    gp << "plot ";
+    const std::string inPanel = "$1==" + std::to_string(s);
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const Style st = styleOf(methods[m]);
+      gp << (m ? ", \\\n     " : "") << "'" << csvName << "' skip 1 using (" << inPanel << " && $3==" << m
+         << " ? $6 : NaN):3:6:7 with xerrorbars pt " << st.point << " ps 1.5 lw 1.5 lc rgb '" << st.colour << "' notitle";
+    }
+    // The counts: wrong / judged, and the unanswered, in grey when 0 and in red otherwise.
+    gp << ", \\\n     '" << csvName << "' skip 1 using (" << inPanel << " && $11==0 && $12==0 ? " << countX
+       << " : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle";
+    gp << ", \\\n     '" << csvName << "' skip 1 using (" << inPanel << " && ($11>0 || $12>0) ? " << countX
+       << " : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb "
+          "'#c00000' notitle\n";
+  }
+  gp << "set label 1 \"Times over batches of queries timed together. Judged: the queries whose reference distance is 0 or above "
+     << format("%.0e", gjkx::study::gjk_comparison::detail::kBand) << " (closer pairs are touching within the methods' tolerances).\" at screen 0.5,0.06 center font ',10'\n";
+  gp << "unset border\nunset tics\nunset grid\nunset xlabel\nunset title\nunset logscale\nset xrange [0:1]\nset yrange [0:1]\nplot NaN notitle\n";
+  gp << "unset multiplot\n";
 }
 
 void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkRow>& rows, bool haveGnuplot) {
@@ -390,17 +456,19 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
   {
     std::ofstream csv(base + ".csv");
     csv << "panel,shape,method_index,method,warm_start,median_ns,p99_ns,error_median,error_max,judged,wrong,failures,plotted_y,plotted_y_max,"
-           "label,label_x,label_y\n";
+           "label,label_x,label_y,queries\n";
     for (const auto& p : points) {
       const GjkRow& r = *p.row;
       char line[640];
-      std::snprintf(line, sizeof line, "%d,%s,%d,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%.4g,%.4g,%s,%.5g,%.5g\n", p.panel, shapes[p.panel].c_str(),
+      std::snprintf(line, sizeof line, "%d,%s,%d,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%.4g,%.4g,%s,%.5g,%.5g,%d\n", p.panel, shapes[p.panel].c_str(),
                     p.method, r.method.c_str(), r.warmStart.c_str(), r.medianNs, r.p99Ns, r.errorMedian, r.errorMax, r.judged, r.wrong, r.failures,
-                    p.y, p.yMax, p.label.c_str(), p.labelX, p.labelY);
+                    p.y, p.yMax, p.label.c_str(), p.labelX, p.labelY, r.queries);
       csv << line;
     }
   }
-  {
+  if (g.boolean) {
+    writeTimePlot(base, name, g, shapes, methods, queries, points);
+  } else {
     std::ofstream gp(base + ".gp");
     gp << "# gnuplot script written by gjk_study (chapter 09): gnuplot " << name << ".gp\n";
     gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
@@ -410,7 +478,7 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
        << " against median time per query, one point per method, one panel per shape\"\n";
     gp << "set logscale xy\nset grid\nset format y '%.0e'\nunset key\n";
     gp << "set xlabel 'median time per query (ns)' offset 0,0.3\n";
-    gp << (g.boolean ? "set ylabel 'wrong answers / judged queries'\n" : "set ylabel '|d - d_ref|: median (point), maximum (bar)'\n");
+    gp << "set ylabel \"|d - d_ref| (the shapes' length unit)\"\n";
     for (std::size_t s = 0; s < shapes.size(); ++s) {
       const double left = double(s % kColumns) * panelW, bottom = (1 - kPanelsTop) * kImageH + double(s / kColumns + 1) * panelH;
       // Margins in screen fractions, so the plot area is where placeLabels assumed it.
@@ -432,15 +500,17 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
         gp << ", \\\n     '" << csvName << "' skip 1 using (" << inPanel << " && $3==" << m << " ? $16 : NaN):17:15 with labels left font ',8' tc rgb '"
            << st.colour << "' notitle";
       }
+      // A black cross over a method that gave no answer on some queries: its error is over the rest only.
+      gp << ", \\\n     '" << csvName << "' skip 1 using (" << inPanel << " && $12 > 0 ? $6 : NaN):13 with points pt 2 ps 2.6 lw 2.5 lc rgb '#000000' notitle";
       gp << "\n";
     }
     // The key: one entry per method, and what the floor means.
     gp << "set origin 0,0\nset size 1," << kPanelsBottom << "\nset lmargin 0\nset rmargin 0\nset tmargin 0\nset bmargin 0\n"
        << "unset title\nunset logscale\nunset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\nset xrange [0:1]\nset yrange [0:1]\n";
     gp << "set key at screen 0.5," << kPanelsBottom - 0.015 << " center top horizontal maxrows 1 width 2 samplen 1 font ',10'\n";
-    gp << "set label 1 \"" << (g.boolean ? "A wrong-answer rate of 0 is drawn at " : "An error of 0 is drawn at ") << format("%.0e", floor)
-       << (g.boolean ? "; a label says how many answers were wrong." : "; the bar reaches the maximum error over the queries.")
-       << " A label says when a method gave no answer on some queries.\" at screen 0.5,0.04 center font ',10'\n";
+    gp << "set label 1 \"An error of 0 is drawn at " << format("%.0e", floor)
+       << "; the point is the median error over the queries, the bar reaches the maximum. A black cross and the label mark a method that gave no answer on some"
+          " queries.\" at screen 0.5,0.04 center font ',10'\n";
     gp << "plot ";
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const Style st = styleOf(methods[m]);
@@ -457,8 +527,49 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
 
 }  // namespace
 
+// The rows of one group back from its gjk-<group>.csv (for --replot: the plots redrawn
+// without measuring again); false when the file is missing or has no queries column.
+bool readGroupCsv(const std::string& folder, const Group& g, std::vector<GjkRow>& rows) {
+  std::ifstream csv(folder + "/gjk-" + g.file + ".csv");
+  std::string line;
+  if (!std::getline(csv, line) || line.find(",queries") == std::string::npos) return false;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string item; std::getline(fields, item, ',');) f.push_back(item);
+    if (f.size() < 18) return false;
+    GjkRow r;
+    r.workload = std::string("gjk_") + (g.boolean ? "boolean_" : "distance_") + f[1] + (g.warm ? "_warm" : "");
+    r.method = f[3];
+    r.warmStart = f[4];
+    r.ours = r.method.rfind("ours", 0) == 0;
+    r.medianNs = std::stod(f[5]);
+    r.p99Ns = std::stod(f[6]);
+    r.errorMedian = std::stod(f[7]);
+    r.errorMax = std::stod(f[8]);
+    r.judged = std::stoi(f[9]);
+    r.wrong = std::stoi(f[10]);
+    r.failures = std::stoi(f[11]);
+    r.queries = std::stoi(f[17]);
+    rows.push_back(r);
+  }
+  return !rows.empty();
+}
+
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
+  if (o.replot) {
+    const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
+    for (const Group& g : kGroups) {
+      std::vector<GjkRow> rows;
+      if (!readGroupCsv(o.out, g, rows)) {
+        std::fprintf(stderr, "gjk_study: %s/gjk-%s.csv is missing or lacks the queries column; run the study again\n", o.out.c_str(), g.file);
+        return 1;
+      }
+      plotGroup(o.out, g, rows, haveGnuplot);
+    }
+    return 0;
+  }
   std::printf("GJK comparison (%s run, seed %u); %s\n", o.study.quick ? "quick" : "full", o.study.seed, peers::presentText(peers::kGjkPeers).c_str());
   std::printf("time per query: median and p99 over batches of 16; distance error |d - d_ref| (overlap = 0);\n");
   std::printf("boolean: wrong answers / judged queries against the exact reference\n");

@@ -1,6 +1,7 @@
 // toi_study: the time-of-impact part of the comparative study (chapter 09).
 //
 //   toi_study [--out DIR] [--quick] [--ccd-data DIR] [--seed N]
+//   toi_study --replot [--out DIR]
 //
 // Runs every method of toi_comparisons.hpp on every workload of workloads.hpp (each query
 // judged against the independent long-double reference), prints the tables (per workload:
@@ -9,7 +10,9 @@
 // four tolerances; then draws one plot per workload into DIR (default figures/study):
 // toi-<workload>.csv and .gp, and toi-<workload>.png when gnuplot is installed (error of the
 // time of impact against the time per query, both log scales, one curve per method joined
-// across its settings, the misses of each method in the key). The tables are also written
+// across its settings, a cross over every setting that missed a hit, the misses in the key;
+// under it, on the same time axis, the share of the reference's hits each setting missed).
+// --replot measures nothing and redraws the plots from the CSV files already in DIR. The tables are also written
 // into DIR as markdown, for the docs page of the study: toi-workloads.md, toi-table.md,
 // toi-float-vs-double.md and toi-ccd.md.
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
@@ -25,6 +28,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -34,6 +38,7 @@ namespace {
 
 struct Options {
   std::string out = "figures/study";
+  bool replot = false;
   ToiStudyOptions study;
 };
 
@@ -45,6 +50,7 @@ Options parse(int argc, char** argv) {
   app.add_option("--ccd-data", o.study.ccdData, "the CCD benchmark's sample queries (default: the build's ../shared/data/ccd-queries)")
       ->type_name("DIR");
   app.add_option("--seed", o.study.seed, "seed of the workloads")->type_name("N")->capture_default_str();
+  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots from the toi-<workload>.csv files already in DIR");
   chapter::parseOrExit(app, argc, argv);
   return o;
 }
@@ -71,65 +77,168 @@ std::string keyText(const std::vector<const ToiRow*>& rows) {
   return text + ")";
 }
 
-void plotWorkload(const std::string& folder, const ToiWorkload& w, const std::vector<ToiRow>& rows, bool haveGnuplot) {
+// How a method family looks on every plot of the study: its own colour and marker (filled
+// for the first six, open for the rest; never a cross, which marks misses). Float curves
+// are dashed.
+struct FamilyStyle {
+  const char* colour;
+  int point;
+};
+FamilyStyle familyStyle(const std::string& family) {
+  static const std::map<std::string, FamilyStyle> styles = {
+      {"ours", {"#d62728", 7}},       {"certified", {"#9467bd", 5}}, {"static", {"#1f77b4", 9}},    {"swept", {"#ff7f0e", 11}},
+      {"CA", {"#2ca02c", 13}},        {"FCL naive", {"#8c564b", 15}}, {"FCL CA", {"#e377c2", 6}},    {"FCL CA indep", {"#555555", 8}},
+      {"Bullet", {"#a6a600", 12}},    {"Box2D", {"#17becf", 4}}};
+  const auto it = styles.find(family);
+  return it == styles.end() ? FamilyStyle{"#000000", 10} : it->second;
+}
+
+// The families the study implements itself (the rest are peers).
+bool isOurs(const std::string& family) {
+  return family == "static" || family == "swept" || family == "CA" || family == "ours" || family == "certified";
+}
+
+// Writes toi-<workload>.csv from the rows of one workload.
+void writeWorkloadCsv(const std::string& base, const std::vector<std::string>& curves,
+                      std::map<std::string, std::vector<const ToiRow*>>& byCurve) {
+  std::ofstream csv(base + ".csv");
+  csv << "curve,method,setting,scalar,median_us,p99_us,error_median,error_max,misses,ref_hits,false_alarms,clear_misses,plotted_error,"
+         "point_label,queries\n";
+  for (std::size_t k = 0; k < curves.size(); ++k)
+    for (const auto* r : byCurve[curves[k]]) {
+      // Detection-only methods have no time of impact: plotted at error 1 (the whole interval).
+      const double y = r->detectionOnly ? 1.0 : (std::isnan(r->errMedian) ? std::nan("") : std::max(r->errMedian, 1e-17));
+      // Points labelled with their setting: ours in double, and the peers' settings.
+      const bool labelled = (r->family == "ours" && r->scalar == "double") || (!r->ours && r->setting != "-");
+      char line[512];
+      std::snprintf(line, sizeof line, "%zu,%s,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%d,%.4g,%s,%d\n", k, r->family.c_str(), r->setting.c_str(),
+                    r->scalar.c_str(), r->medianUs, r->p99Us, r->errMedian, r->errMax, r->misses, r->refHits, r->falseAlarms,
+                    r->clearMisses, y, labelled ? r->setting.c_str() : "", r->queries);
+      csv << line;
+    }
+}
+
+// The plot of one workload, in two panels on one time axis, with the key to their right:
+// above, the median error of the time of impact against the median time per query (both
+// log), one curve per method joined across its settings, and a black cross over every
+// setting that missed a collision the reference found; below, the share of the
+// reference's hits each setting missed, so that a method that misses sits visibly high.
+void writeWorkloadPlot(const std::string& base, const std::string& workload, int queries, const std::vector<std::string>& curves,
+                       std::map<std::string, std::vector<const ToiRow*>>& byCurve) {
+  const std::string csvName = std::filesystem::path(base + ".csv").filename().string();
+  double xLo = 1e300, xHi = 0, yLo = 1, missTop = 0;
+  int refHits = 0, clearMisses = 0;
+  for (const auto& c : curves)
+    for (const auto* r : byCurve[c]) {
+      xLo = std::min(xLo, r->medianUs);
+      xHi = std::max(xHi, r->medianUs);
+      if (!r->detectionOnly && !std::isnan(r->errMedian)) yLo = std::min(yLo, std::max(r->errMedian, 1e-17));
+      if (r->refHits) missTop = std::max(missTop, 100.0 * r->misses / r->refHits);
+      refHits = r->refHits;
+      clearMisses = r->clearMisses;
+    }
+  xLo /= 1.5;
+  xHi *= 1.5;
+  missTop = missTop > 0 ? std::min(100.0, std::ceil(missTop * 1.25 / 10) * 10) : 10;
+  const double yBottom = std::pow(10.0, std::floor(std::log10(yLo)) - 1);
+  std::ofstream gp(base + ".gp");
+  gp << "# gnuplot script written by toi_study (chapter 09): gnuplot " << std::filesystem::path(base + ".gp").filename().string() << "\n";
+  gp << "set terminal pngcairo size 1300,900 font 'sans,10'\n";
+  gp << "set output '" << std::filesystem::path(base + ".png").filename().string() << "'\n";
+  gp << "set datafile separator ','\nset termoption noenhanced\n";
+  gp << "set multiplot title \"time of impact, workload " << workload << " (" << queries << " queries: " << refHits
+     << " hits and " << clearMisses << " clear misses by the reference)\"\n";
+  gp << "set lmargin at screen 0.08\nset rmargin at screen 0.66\n";
+  gp << "set logscale x\nset xrange [" << xLo << ":" << xHi << "]\nset grid\n";
+  // The error panel.
+  gp << "set tmargin at screen 0.93\nset bmargin at screen 0.33\n";
+  gp << "set logscale y\nset yrange [" << yBottom << ":5]\nset format y '%.0e'\nset format x ''\nunset xlabel\n";
+  gp << "set ylabel 'median |t - t_ref|, in units of the interval [t_0, t_1]'\n";
+  gp << "set label 1 'yes/no only: plotted at error 1' at graph 0.01, first 1.6 left font ',8' tc rgb '#777777'\n";
+  gp << "set key at screen 0.675,0.93 left top Left reverse width -4 samplen 3 spacing 1.15 font ',9'\n";
+  gp << "plot ";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const ToiRow& first = *byCurve[curves[k]].front();
+    const FamilyStyle st = familyStyle(first.family);
+    gp << (k ? ", \\\n     " : "") << "'" << csvName << "' skip 1 using ($1==" << k << " ? $5 : NaN):13 with linespoints lw 2 pt "
+       << st.point << " ps 1.3 lc rgb '" << st.colour << "' dt " << (first.scalar == "float" ? 2 : 1) << " title \""
+       << keyText(byCurve[curves[k]]) << "\"";
+  }
+  // A black cross over every setting that missed a hit; the settings' names beside the points.
+  gp << ", \\\n     '" << csvName << "' skip 1 using ($9 > 0 ? $5 : NaN):13 with points pt 2 ps 2.2 lw 2.5 lc rgb '#000000'"
+     << " title \"X: missed some of the reference's hits\"";
+  gp << ", \\\n     '" << csvName << "' skip 1 using 5:13:14 with labels font ',7' offset 0,0.9 notitle\n";
+  // The miss strip, on the same time axis.
+  gp << "unset label 1\nunset key\n";
+  gp << "set tmargin at screen 0.30\nset bmargin at screen 0.09\n";
+  gp << "unset logscale y\nset yrange [-" << missTop * 0.08 << ":" << missTop << "]\nset format y '%g%%'\nset ytics " << missTop / 2
+     << "\nset format x '%g'\n";
+  gp << "set xlabel 'median time per query (microseconds)'\nset ylabel \"missed hits (%)\"\n";
+  gp << "plot ";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const ToiRow& first = *byCurve[curves[k]].front();
+    const FamilyStyle st = familyStyle(first.family);
+    gp << (k ? ", \\\n     " : "") << "'" << csvName << "' skip 1 using ($1==" << k << " ? $5 : NaN):($10 > 0 ? 100.0*$9/$10 : NaN) with points pt "
+       << st.point << " ps 1.3 lw 1.5 lc rgb '" << st.colour << "' notitle";
+  }
+  gp << ", \\\n     '" << csvName << "' skip 1 using ($9 > 0 ? $5 : NaN):(100.0*$9/$10) with points pt 2 ps 2.2 lw 2.5 lc rgb '#000000' notitle";
+  gp << "\n";
+  gp << "unset multiplot\n";
+}
+
+// One workload's CSV, plot script and (with gnuplot) PNG.
+void plotWorkload(const std::string& folder, const std::string& workload, int queries, const std::vector<ToiRow>& rows, bool writeCsv,
+                  bool haveGnuplot) {
   std::vector<std::string> curves;
   std::map<std::string, std::vector<const ToiRow*>> byCurve;
   for (const auto& r : rows) {
-    if (r.workload != w.name) continue;
+    if (r.workload != workload) continue;
     const std::string c = curveName(r);
     if (!byCurve.count(c)) curves.push_back(c);
     byCurve[c].push_back(&r);
   }
-  const std::string base = folder + "/toi-" + w.name;
-  {
-    std::ofstream csv(base + ".csv");
-    csv << "curve,method,setting,scalar,median_us,p99_us,error_median,error_max,misses,ref_hits,false_alarms,clear_misses,plotted_error,"
-           "point_label\n";
-    for (std::size_t k = 0; k < curves.size(); ++k)
-      for (const auto* r : byCurve[curves[k]]) {
-        // Detection-only methods have no time of impact: plotted at error 1 (the whole interval).
-        const double y = r->detectionOnly ? 1.0 : (std::isnan(r->errMedian) ? std::nan("") : std::max(r->errMedian, 1e-17));
-        // Points labelled with their setting: ours in double, and the peers' settings.
-        const bool labelled = (r->family == "ours" && r->scalar == "double") || (!r->ours && r->setting != "-");
-        char line[512];
-        std::snprintf(line, sizeof line, "%zu,%s,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%d,%.4g,%s\n", k, r->family.c_str(), r->setting.c_str(),
-                      r->scalar.c_str(), r->medianUs, r->p99Us, r->errMedian, r->errMax, r->misses, r->refHits, r->falseAlarms,
-                      r->clearMisses, y, labelled ? r->setting.c_str() : "");
-        csv << line;
-      }
-  }
-  {
-    std::ofstream gp(base + ".gp");
-    gp << "# gnuplot script written by toi_study (chapter 09): gnuplot " << std::filesystem::path(base + ".gp").filename().string() << "\n";
-    gp << "set terminal pngcairo size 1200,800 font 'sans,10'\n";
-    gp << "set output '" << std::filesystem::path(base + ".png").filename().string() << "'\n";
-    gp << "set datafile separator ','\n";
-    gp << "set termoption noenhanced\nset logscale xy\nset format y '%.0e'\nset grid\n";
-    gp << "set xlabel 'median time per query (microseconds)'\nset ylabel 'median |t - t_ref| over the hits both report'\n";
-    gp << "set title \"time of impact, workload " << w.name << " (" << w.queries.size()
-       << " queries): error against time; swept test (yes/no only) plotted at error 1\" noenhanced\n";
-    gp << "set key outside right top\n";
-    // One colour per method; float curves dashed.
-    static const char* const colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
-                                          "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa0000", "#005500", "#0000aa"};
-    std::map<std::string, int> colourOf;
-    gp << "plot ";
-    for (std::size_t k = 0; k < curves.size(); ++k) {
-      const ToiRow& first = *byCurve[curves[k]].front();
-      if (!colourOf.count(first.family)) colourOf[first.family] = int(colourOf.size()) % 14;
-      gp << (k ? ", \\\n     " : "") << "'" << std::filesystem::path(base + ".csv").filename().string()
-         << "' skip 1 using ($1==" << k << " ? $5 : NaN):13 with linespoints lw 2 pt " << (k % 13 + 1) << " lc rgb '"
-         << colours[colourOf[first.family]] << "' dt " << (first.scalar == "float" ? 2 : 1) << " title \"" << keyText(byCurve[curves[k]])
-         << "\"";
-    }
-    gp << ", \\\n     '" << std::filesystem::path(base + ".csv").filename().string()
-       << "' skip 1 using 5:13:14 with labels font ',7' offset 0,0.8 notitle\n";
-  }
+  const std::string base = folder + "/toi-" + workload;
+  if (writeCsv) writeWorkloadCsv(base, curves, byCurve);
+  writeWorkloadPlot(base, workload, queries, curves, byCurve);
   if (haveGnuplot) {
-    const std::string command = "cd '" + folder + "' && gnuplot 'toi-" + w.name + ".gp'";
+    const std::string command = "cd '" + folder + "' && gnuplot 'toi-" + workload + ".gp'";
     if (std::system(command.c_str()) != 0) std::fprintf(stderr, "toi_study: gnuplot failed on %s.gp\n", base.c_str());
     else std::printf("wrote %s.png\n", base.c_str());
   }
+}
+
+// The rows of one workload back from its toi-<workload>.csv (for --replot: the plots
+// redrawn without measuring again). Returns the workload's query count, 0 if unreadable.
+int readWorkloadCsv(const std::string& path, const std::string& workload, std::vector<ToiRow>& rows) {
+  std::ifstream csv(path);
+  std::string line;
+  if (!std::getline(csv, line)) return 0;
+  int queries = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string item; std::getline(fields, item, ',');) f.push_back(item);
+    if (f.size() < 13) continue;
+    ToiRow r;
+    r.workload = workload;
+    r.family = f[1];
+    r.setting = f[2];
+    r.scalar = f[3];
+    r.ours = isOurs(r.family);
+    r.medianUs = std::stod(f[4]);
+    r.p99Us = std::stod(f[5]);
+    r.errMedian = std::stod(f[6]);
+    r.errMax = std::stod(f[7]);
+    r.misses = std::stoi(f[8]);
+    r.refHits = std::stoi(f[9]);
+    r.falseAlarms = std::stoi(f[10]);
+    r.clearMisses = std::stoi(f[11]);
+    r.detectionOnly = std::isnan(r.errMedian) && std::stod(f[12]) == 1.0;
+    r.queries = f.size() > 14 ? std::stoi(f[14]) : 0;
+    queries = r.queries;
+    rows.push_back(r);
+  }
+  return queries;
 }
 
 // The provenance line of every markdown table: the command, the run and the date.
@@ -301,6 +410,23 @@ void writeCcd(const std::string& path, const Options& o, const ToiStudyResults& 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::filesystem::create_directories(o.out);
+  const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
+  if (!haveGnuplot) std::printf("gnuplot not found: writing the .gp files, skipping the plots\n");
+  if (o.replot) {
+    for (const auto& entry : std::filesystem::directory_iterator(o.out)) {
+      const std::string file = entry.path().filename().string();
+      if (file.rfind("toi-", 0) != 0 || entry.path().extension() != ".csv") continue;
+      const std::string workload = file.substr(4, file.size() - 8);
+      std::vector<ToiRow> rows;
+      const int queries = readWorkloadCsv(entry.path().string(), workload, rows);
+      if (rows.empty() || queries == 0) {
+        std::fprintf(stderr, "toi_study: %s has no rows or no queries column; run the study again\n", file.c_str());
+        return 1;
+      }
+      plotWorkload(o.out, workload, queries, rows, false, haveGnuplot);
+    }
+    return 0;
+  }
   std::printf("toi_study: peers found:");
   for (const auto& p : peers::found(peers::kToiPeers)) std::printf(" %s", p.c_str());
   std::printf("; left out (not installed):");
@@ -351,8 +477,6 @@ int main(int argc, char** argv) {
   writeCcd(o.out + "/toi-ccd.md", o, results);
   std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md and toi-ccd.md\n", o.out.c_str());
 
-  const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
-  if (!haveGnuplot) std::printf("gnuplot not found: wrote the .csv and .gp files, skipped the plots\n");
-  for (const auto& w : results.workloads) plotWorkload(o.out, w, results.rows, haveGnuplot);
+  for (const auto& w : results.workloads) plotWorkload(o.out, w.name, int(w.queries.size()), results.rows, true, haveGnuplot);
   return 0;
 }

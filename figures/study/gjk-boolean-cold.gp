@@ -1,181 +1,135 @@
-# gnuplot script written by gjk_study (chapter 07): gnuplot gjk-boolean-cold.gp
+# gnuplot script written by gjk_study (chapter 09): gnuplot gjk-boolean-cold.gp
 set terminal pngcairo size 1500,1000 font 'sans,10'
 set output 'gjk-boolean-cold.png'
 set datafile separator ','
 set termoption noenhanced
-set multiplot title "GJK, boolean queries, cold: wrong-answer rate against median time per query, one point per method, one panel per shape"
-set logscale xy
-set grid
-set format y '%.0e'
+set multiplot title "GJK, boolean queries, cold: median time per query (point) and 99th percentile (whisker) per method, one panel per shape; wrong answers counted at the right"
+set logscale x
+set grid xtics
 unset key
-set xlabel 'median time per query (ns)' offset 0,0.3
-set ylabel 'wrong answers / judged queries'
-set lmargin at screen 0.0466667
+set xlabel 'time per query (ns)' offset 0,0.3
+set lmargin at screen 0.0733333
 set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [81.5023:4325.25]
-set yrange [2e-05:3]
+set xrange [82.2143:10539.2]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'box (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set lmargin at screen 0.38
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $11==0 && $12==0 ? 2621.53 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && ($11>0 || $12>0) ? 2621.53 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set lmargin at screen 0.406667
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('50' 50, '100' 100, '200' 200, '500' 500)
-set xrange [37.2114:908.992]
-set yrange [2e-05:3]
+set xtics ('50' 50, '100' 100, '200' 200)
+set xrange [37.5429:1688.93]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ours-curved' 7, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'sphere (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set lmargin at screen 0.713333
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $11==0 && $12==0 ? 567.189 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && ($11>0 || $12>0) ? 567.189 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set lmargin at screen 0.74
 set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
-set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000)
-set xrange [85.0862:14061.5]
-set yrange [2e-05:3]
+set xtics ('100' 100, '1000' 1000)
+set xrange [85.8571:44415]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ours-curved' 7, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'capsule (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set lmargin at screen 0.0466667
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $11==0 && $12==0 ? 7406.05 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && ($11>0 || $12>0) ? 7406.05 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set lmargin at screen 0.0733333
 set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [178.579:4616.35]
-set yrange [2e-05:3]
+set xrange [180.143:13260.1]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope12 (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set lmargin at screen 0.38
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $11==0 && $12==0 ? 3866.87 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && ($11>0 || $12>0) ? 3866.87 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set lmargin at screen 0.406667
 set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
-set xtics ('1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [552.994:45115.9]
-set yrange [2e-05:3]
+set xtics ('1000' 1000, '10000' 10000)
+set xrange [557.929:115673]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope100 (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set lmargin at screen 0.713333
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $11==0 && $12==0 ? 25068.2 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && ($11>0 || $12>0) ? 25068.2 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set lmargin at screen 0.74
 set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('10000' 10000, '100000' 100000)
-set xrange [1153.42:730087]
-set yrange [2e-05:3]
+set xrange [1163.57:2.37673e+06]
+set yrange [7.6:-0.6]
+set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope1000 (256 queries)' offset 0,-0.6
-plot 'gjk-boolean-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==0 ? $6 : NaN):13 with points pt 7 ps 1.6 lw 1.5 lc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==0 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#08306b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==1 ? $6 : NaN):13 with points pt 6 ps 1.6 lw 1.5 lc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==1 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#4292c6' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==2 ? $6 : NaN):13 with points pt 5 ps 1.6 lw 1.5 lc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==2 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#ff7f0e' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==3 ? $6 : NaN):13 with points pt 4 ps 1.6 lw 1.5 lc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==3 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#8c564b' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==4 ? $6 : NaN):13 with points pt 9 ps 1.6 lw 1.5 lc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==4 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#d62728' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==5 ? $6 : NaN):13 with points pt 11 ps 1.6 lw 1.5 lc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==5 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#e377c2' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==6 ? $6 : NaN):13 with points pt 15 ps 1.6 lw 1.5 lc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==6 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#2ca02c' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==7 ? $6 : NaN):13 with points pt 13 ps 1.6 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==7 ? $16 : NaN):17:15 with labels left font ',8' tc rgb '#17becf' notitle
-set origin 0,0
-set size 1,0.12
-set lmargin 0
-set rmargin 0
-set tmargin 0
-set bmargin 0
-unset title
-unset logscale
+plot 'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==0 ? $6 : NaN):3:6:7 with xerrorbars pt 7 ps 1.5 lw 1.5 lc rgb '#08306b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==1 ? $6 : NaN):3:6:7 with xerrorbars pt 6 ps 1.5 lw 1.5 lc rgb '#4292c6' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==2 ? $6 : NaN):3:6:7 with xerrorbars pt 5 ps 1.5 lw 1.5 lc rgb '#ff7f0e' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==3 ? $6 : NaN):3:6:7 with xerrorbars pt 4 ps 1.5 lw 1.5 lc rgb '#8c564b' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==4 ? $6 : NaN):3:6:7 with xerrorbars pt 9 ps 1.5 lw 1.5 lc rgb '#d62728' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $11==0 && $12==0 ? 267337 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && ($11>0 || $12>0) ? 267337 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+set label 1 "Times over batches of queries timed together. Judged: the queries whose reference distance is 0 or above 5e-04 (closer pairs are touching within the methods' tolerances)." at screen 0.5,0.06 center font ',10'
 unset border
 unset tics
 unset grid
 unset xlabel
-unset ylabel
+unset title
+unset logscale
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.5,0.105 center top horizontal maxrows 1 width 2 samplen 1 font ',10'
-set label 1 "A wrong-answer rate of 0 is drawn at 1e-04; a label says how many answers were wrong. A label says when a method gave no answer on some queries." at screen 0.5,0.04 center font ',10'
-plot NaN with points pt 7 ps 1.6 lc rgb '#08306b' title 'ours-double', NaN with points pt 6 ps 1.6 lc rgb '#4292c6' title 'ours-float', NaN with points pt 5 ps 1.6 lc rgb '#ff7f0e' title 'ccd-gjk', NaN with points pt 4 ps 1.6 lc rgb '#8c564b' title 'ccd-mpr', NaN with points pt 9 ps 1.6 lc rgb '#d62728' title 'fcl-libccd', NaN with points pt 11 ps 1.6 lc rgb '#e377c2' title 'fcl-indep', NaN with points pt 15 ps 1.6 lc rgb '#2ca02c' title 'bullet-gjk-dist', NaN with points pt 13 ps 1.6 lc rgb '#17becf' title 'ours-curved'
+plot NaN notitle
 unset multiplot

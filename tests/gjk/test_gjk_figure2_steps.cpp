@@ -122,9 +122,9 @@ TEST_CASE("Fig. 2: GJK in 2D, iteration by iteration", "[gjk][steps][fig2]") {
     CHECK(it[5].step == GjkStep::Converged);
     requireSimplex(it[5].simplex, {V(3, 3, 0), V(4, -1, 0)});
   }
-  SECTION("s_1 through s_4 are separating vectors, s_0 is not (§2.3)") {
+  SECTION("s_1 through s_5 are separating vectors, s_0 is not (§2.3; the paper's run stops at s_4)") {
     CHECK(it[0].supportingDistance < 0);
-    for (int i = 1; i <= 4; ++i) CHECK(it[i].supportingDistance > 0);
+    for (int i = 1; i <= 5; ++i) CHECK(it[i].supportingDistance > 0);
     // The Minkowski distance decreases monotonically (§2.2).
     for (int i = 1; i < 6; ++i) CHECK(it[i].minkowskiDistance <= it[i - 1].minkowskiDistance);
   }
