@@ -146,7 +146,7 @@ void modelFigure(const std::string& out) {
     char title[120];
     std::snprintf(title, sizeof title, "%s: %zu bones, %ld triangles", views[view], bones.size(), triangles);
     canvas.title(view == 0 ? title : views[view]);
-    canvas.setCamera(Camera::orbit(V3(0, 0.03, 0.33), 0.36, azimuths[view], 0.12, 0.6, canvas.plotAspect()));
+    canvas.setCamera(Camera::orbit(V3(0, 0.03, 0.33), 0.33, azimuths[view], 0.12, 0.6, canvas.plotAspect()));
     for (const auto& b : bones)
       canvas.mesh(placed(b.mesh, V3::Zero(), Eigen::Quaterniond::Identity()),
                   MeshStyle{boneColor, Stroke{palette::ink, 0.5}, false, true});

@@ -53,9 +53,12 @@ class Random {
   std::mt19937 engine_;
 };
 
-/// Checks that every edge of `mesh` is used once in each direction (closed and
-/// consistently oriented); throws std::logic_error naming the mesh otherwise.
+/// Checks that every vertex of `mesh` is finite and every edge is used once in each
+/// direction (closed and consistently oriented); throws std::logic_error naming the mesh otherwise.
 inline void requireClosedOriented(const gjkx::TriangleMesh& mesh) {
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    if (!mesh.vertices[i].allFinite())
+      throw std::logic_error(mesh.source + ": vertex " + std::to_string(i) + " is not finite");
   std::map<std::pair<int, int>, int> directed;
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];

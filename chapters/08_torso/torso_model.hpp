@@ -125,9 +125,9 @@ inline gjkx::TriangleMesh vertebra(const VertebraSize& v, const V3& centre, int 
 /// Resolution of the generated meshes (the triangle counts follow from them).
 struct Resolution {
   int cervicalStations = 24, thoracicStations = 24, lumbarStations = 28;  ///< vertebra loop stations
-  int vertebraRows = 10;      ///< vertebra profile vertices
-  int ribStations = 16, ribRows = 6;            ///< rib path points, profile vertices
-  int cartilageStations = 5, cartilageRows = 6;  ///< cartilage
+  int vertebraRows = 12;      ///< vertebra profile vertices
+  int ribStations = 18, ribRows = 6;            ///< rib path points, profile vertices
+  int cartilageStations = 6, cartilageRows = 6;  ///< cartilage
 };
 
 /// The 80 bones of the torso in its own frame.
@@ -264,7 +264,7 @@ inline std::vector<Bone> buildTorso(const Resolution& res = {}) {
         const double zs = std::min(end.z() + 0.006 * (k - 1), bodyTop - 0.008);
         target = V3(s * (halfWidthAt(sternalBody, zs - bodyTop) + gap + 0.004), sternumY, zs);
       } else if (k <= 10) {
-        target = start + V3(-s * 0.022, 0.012, 0.028 - 0.004 * (k - 8));
+        target = start + 0.024 * along + V3(-s * 0.008, 0, 0.008);
       } else {
         target = start + 0.02 * along;
       }
@@ -289,7 +289,7 @@ inline std::vector<Bone> buildTorso(const Resolution& res = {}) {
   const std::vector<V2> scapulaOutline =
       resample({{0.0, 0.035}, {0.004, -0.03}, {0.012, -0.105}, {0.05, -0.06}, {0.083, -0.012}, {0.092, 0.0},
                 {0.102, 0.026}, {0.088, 0.04}, {0.06, 0.024}, {0.03, 0.03}},
-               32);
+               36);
   for (int side = 0; side < 2; ++side) {
     const double s = side == 0 ? -1 : 1;
     auto place = [&](const V2& p, double h) {
@@ -314,12 +314,12 @@ inline std::vector<Bone> buildTorso(const Resolution& res = {}) {
     const V3 sternal(s * 0.036, sternumY + 0.004, manubriumTop - 0.004);
     const V3 acromial = acromion + V3(-s * 0.006, 0.014, 0.004);
     const std::vector<V3> path = bezier(sternal, sternal + V3(s * 0.05, 0.025, 0.004),
-                                        acromial + V3(-s * 0.045, 0.03, -0.004), acromial, 14);
+                                        acromial + V3(-s * 0.045, 0.03, -0.004), acromial, 16);
     const std::string clavicle = std::string("clavicle_") + (side == 0 ? "left" : "right");
     add(clavicle, "clavicle",
         sweep(path, [](int) { return V3(0, 0, 1); },
               [&](int i) {
-                const double r = lerp(0.0065, 0.0045, std::sin(M_PI * i / 13.0));
+                const double r = lerp(0.0065, 0.0045, std::sin(M_PI * i / 15.0));
                 return profile(8, r, r, 0.8 * r, 0.8 * r);
               },
               0.004, clavicle));
@@ -413,7 +413,7 @@ inline gjkx::TriangleMesh buildPlant(int leaves) {
     const int half = 26;
     for (int i = 0; i <= half; ++i) {
       const double s = length * i / half;
-      outline.emplace_back(s, width * std::pow(std::sin(M_PI * s / length), 0.7) * (1 - 0.3 * s / length));
+      outline.emplace_back(s, width * std::pow(std::max(0.0, std::sin(M_PI * s / length)), 0.7) * (1 - 0.3 * s / length));
     }
     for (int i = half - 1; i >= 1; --i) outline.emplace_back(outline[std::size_t(i)].x(), -outline[std::size_t(i)].y());
     const V3 start = end - 0.01 * out;
