@@ -9,7 +9,7 @@
 //                           gjkx_generate_torso (seed 1), figures/data/torso-run/bodies.csv.
 //                           Without that run only the start is drawn, and a warning says so.
 // Options: --run DIR reads DIR/bodies.csv instead; --frames DIR writes one PNG per frame of
-// the run (an animation); --seed N must match the seed the run's scene was made with.
+// the run (an animation); --seed N and --reduced must match how the run's scene was made.
 #include "../chapter.hpp"
 #include "torso_model.hpp"
 
@@ -112,24 +112,31 @@ Mesh placed(const gjkx::TriangleMesh& m, const V3& position, const Eigen::Quater
   return out;
 }
 
-/// Draws the scene at one frame in the current panel, the camera framing it all.
-void drawScene(Canvas& canvas, const torso::SceneLayout& layout, const Frame& f, double azimuth) {
-  std::vector<Mesh> bones;
+/// The box holding the plant, the floor's middle and the bones at every one of `frames`:
+/// one framing for all panels, so that they share a scale.
+std::pair<V3, V3> bounds(const torso::SceneLayout& layout, const std::vector<Frame>& frames) {
   V3 lo(-0.35, -0.35, 0), hi(0.35, 0.35, layout.drop.plantTop);
-  for (std::size_t b = 0; b < layout.bones.size(); ++b) {
-    bones.push_back(placed(layout.bones[b].mesh, f.position[b], f.orientation[b]));
-    for (const V3& v : bones.back().vertices) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-  }
-  const V3 centre = 0.5 * (lo + hi);
-  canvas.setCamera(Camera::orbit(centre, 0.5 * (hi - lo).norm(), azimuth, 0.3, 0.6, canvas.plotAspect()));
+  for (const Frame& f : frames)
+    for (std::size_t b = 0; b < layout.bones.size(); ++b)
+      for (const V3& v : layout.bones[b].mesh.vertices) {
+        const V3 p = f.orientation[b] * v + f.position[b];
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+  return {lo, hi};
+}
+
+/// Draws the scene at one frame in the current panel, the camera framing the box `box`.
+void drawScene(Canvas& canvas, const torso::SceneLayout& layout, const Frame& f, const std::pair<V3, V3>& box) {
+  const auto& [lo, hi] = box;
+  canvas.setCamera(Camera::orbit(0.5 * (lo + hi), 0.5 * (hi - lo).norm(), -0.9, 0.3, 0.6, canvas.plotAspect()));
   const double r = std::max(0.5, 0.6 * std::max(hi.x() - lo.x(), hi.y() - lo.y()));
   canvas.polygon3({V3(-r, -r, 0), V3(r, -r, 0), V3(r, r, 0), V3(-r, r, 0)}, ShapeStyle{floorColor, style::noStroke});
   canvas.mesh(placed(layout.plant, V3::Zero(), Eigen::Quaterniond::Identity()),
               MeshStyle{plantColor, Stroke{palette::ink, 0.5}, false, true});
-  for (const Mesh& m : bones) canvas.mesh(m, MeshStyle{boneColor, Stroke{palette::ink, 0.5}, false, true});
+  for (std::size_t b = 0; b < layout.bones.size(); ++b)
+    canvas.mesh(placed(layout.bones[b].mesh, f.position[b], f.orientation[b]),
+                MeshStyle{boneColor, Stroke{palette::ink, 0.5}, false, true});
 }
 
 void modelFigure(const std::string& out) {
@@ -170,17 +177,18 @@ int main(int argc, char** argv) {
                "the plant) from a kept run of gjkx_simulate."};
   std::string out = ".", run = GJKX_TORSO_RUN, framesDir;
   std::uint32_t seed = 1;
+  bool reduced = false;
   app.add_option("--out", out, "the folder for the PNG files, created if needed")->capture_default_str();
   app.add_option("--run", run, "the folder of the run (bodies.csv of gjkx_simulate)")->capture_default_str();
   app.add_option("--frames", framesDir, "also write one PNG per frame of the run into this folder");
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
       ->capture_default_str();
+  app.add_flag("--reduced", reduced, "the run is of the reduced scene (gjkx_generate_torso --reduced)");
   chapter::parseOrExit(app, argc, argv);
   std::filesystem::create_directories(out);
   try {
     modelFigure(out);
-    const torso::SceneLayout layout = torso::layoutScene(seed, false);
-    const double azimuth = -0.9;
+    const torso::SceneLayout layout = torso::layoutScene(seed, reduced);
     std::vector<Frame> frames;
     if (std::filesystem::exists(run + "/bodies.csv")) {
       frames = readRun(run + "/bodies.csv", layout);
@@ -191,8 +199,8 @@ int main(int argc, char** argv) {
     const int W = 420, H = 600;
     if (frames.empty()) {
       Canvas canvas(W, H);
-      canvas.title("t = 0 s: the torso dropped above the plant (no run kept)");
-      drawScene(canvas, layout, startFrame(layout), azimuth);
+      canvas.title("t = 0 s: dropped (no run kept)");
+      drawScene(canvas, layout, startFrame(layout), bounds(layout, {startFrame(layout)}));
       canvas.savePng(out + "/fig05-torso-crash.png");
     } else {
       const std::size_t impact = impactFrame(frames);
@@ -200,13 +208,14 @@ int main(int argc, char** argv) {
       while (scattered + 1 < frames.size() && frames[scattered].time < frames[impact].time + 0.5) ++scattered;
       const Frame panels[4] = {startFrame(layout), frames[impact], frames[scattered], frames.back()};
       const char* names[4] = {"dropped", "the impact", "scattered", "settled"};
+      const auto box = bounds(layout, {panels[0], panels[1], panels[2], panels[3]});
       Canvas canvas(4 * W, H);
       for (int p = 0; p < 4; ++p) {
         canvas.setPanel({p * W, 0, W, H});
         char title[80];
         std::snprintf(title, sizeof title, "t = %.2f s: %s", panels[p].time, names[p]);
         canvas.title(title);
-        drawScene(canvas, layout, panels[p], azimuth);
+        drawScene(canvas, layout, panels[p], box);
       }
       canvas.savePng(out + "/fig05-torso-crash.png");
     }
@@ -214,13 +223,16 @@ int main(int argc, char** argv) {
     if (!framesDir.empty()) {
       if (frames.empty()) throw std::runtime_error("--frames needs a run: " + run + "/bodies.csv is missing");
       std::filesystem::create_directories(framesDir);
+      std::vector<Frame> all{startFrame(layout)};
+      all.insert(all.end(), frames.begin(), frames.end());
+      const auto box = bounds(layout, all);
       for (const Frame& f : frames) {
         Canvas canvas(640, 640);
         char title[40], name[40];
         std::snprintf(title, sizeof title, "t = %.3f s", f.time);
         std::snprintf(name, sizeof name, "/frame-%04d.png", f.frame);
         canvas.title(title);
-        drawScene(canvas, layout, f, azimuth);
+        drawScene(canvas, layout, f, box);
         canvas.savePng(framesDir + name);
       }
       std::printf("wrote %zu frames to %s\n", frames.size(), framesDir.c_str());
