@@ -5,7 +5,10 @@
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/reference/time_of_impact.hpp>
 
+#include <algorithm>
 #include <limits>
+#include <tuple>
+#include <vector>
 #include <optional>
 #include <type_traits>
 
@@ -66,23 +69,63 @@ double signedDistanceOfPieces(const Shape<double>& a, const Pose<double>& poseA,
   return g.status == GjkStatus::Overlapping ? 0.0 : g.distance;
 }
 
+/// The radius of a sphere about the shape's centre that holds it.
+double radiusAboutCentre(const Shape<double>& shape) {
+  return std::visit(
+      [](const auto& x) {
+        using X = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<X, Polytope<double>>) {
+          double r = 0;
+          for (const auto& v : x.vertices()) r = std::max(r, (v - x.center()).norm());
+          return r;
+        } else {
+          return double(x.boundingRadius()) + double(x.center().norm());
+        }
+      },
+      shape.variant());
+}
+
 }  // namespace
 
 double referenceSignedDistance(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b,
                                const Pose<double>& poseB) {
   if (a.pieces.size() == 1 && b.pieces.size() == 1) return signedDistanceOfPieces(a.pieces[0], poseA, b.pieces[0], poseB);
   // Bodies of several convex pieces: the least over the piece pairs (the deepest
-  // penetration), pairs whose bounding spheres are farther apart than the best so far skipped.
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& pa : a.pieces) {
-    const Eigen::Vector3d ca = poseA(pa.center());
-    const double ra = pa.boundingRadius() + (pa.center()).norm();
-    for (const auto& pb : b.pieces) {
-      const Eigen::Vector3d cb = poseB(pb.center());
-      const double rb = pb.boundingRadius() + (pb.center()).norm();
-      if ((ca - cb).norm() - ra - rb > best) continue;
-      best = std::min(best, signedDistanceOfPieces(pa, poseA, pb, poseB));
-    }
+  // penetration). The pairs are taken nearest first by the gap between their bounding
+  // spheres, a lower bound on their distance, and the search stops once that bound
+  // exceeds the best found: a static plant of 8,640 pieces then costs a few exact
+  // distances, not 8,640 per bone piece.
+  struct Candidate {
+    double bound;
+    int a, b;
+  };
+  std::vector<Candidate> candidates;
+  candidates.reserve(a.pieces.size() * b.pieces.size());
+  std::vector<Eigen::Vector3d> centresB;
+  std::vector<double> radiiB;
+  for (const auto& pb : b.pieces) {
+    centresB.push_back(poseB(pb.center()));
+    radiiB.push_back(radiusAboutCentre(pb));
+  }
+  for (int ia = 0; ia < int(a.pieces.size()); ++ia) {
+    const Eigen::Vector3d ca = poseA(a.pieces[ia].center());
+    const double ra = radiusAboutCentre(a.pieces[ia]);
+    for (int ib = 0; ib < int(b.pieces.size()); ++ib)
+      candidates.push_back({(ca - centresB[ib]).norm() - ra - radiiB[ib], ia, ib});
+  }
+  // The nearest-looking pair's distance bounds the answer: only pairs that may beat it are sorted.
+  const auto byBound = [](const Candidate& x, const Candidate& y) {
+    return std::tie(x.bound, x.a, x.b) < std::tie(y.bound, y.a, y.b);
+  };
+  const Candidate first = *std::min_element(candidates.begin(), candidates.end(), byBound);
+  double best = signedDistanceOfPieces(a.pieces[first.a], poseA, b.pieces[first.b], poseB);
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                  [&](const Candidate& c) { return c.bound > best; }),
+                   candidates.end());
+  std::sort(candidates.begin(), candidates.end(), byBound);
+  for (const Candidate& c : candidates) {
+    if (c.bound > best) break;
+    best = std::min(best, signedDistanceOfPieces(a.pieces[c.a], poseA, b.pieces[c.b], poseB));
   }
   return best;
 }

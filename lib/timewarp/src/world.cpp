@@ -121,15 +121,48 @@ Eigen::Vector3d centreToCentre(const BodyState& si, const BodyState& sj) {
 /// a free-flight path turns along the shortest arc between its end orientations
 /// (motion.hpp, FreeFlightPath), so a body turning half a turn or more within one step
 /// would be drawn turning the other way.
+/// A path that would turn half a turn or more (see flyChecked): the frame is run again in
+/// shorter intervals (World::step).
+struct SpinOverflow : std::runtime_error {
+  SpinOverflow(const std::string& what, double angularSpeed) : std::runtime_error(what), angularSpeed(angularSpeed) {}
+  double angularSpeed;  ///< the body's angular speed (rad/s)
+};
+
 FreeFlight flyChecked(const WorldBody& body, const BodyState& state, double t0, double t1, const Eigen::Vector3d& gravity) {
   FreeFlight path = freeFlight(body.rigid, state, t0, t1, gravity);
   if (std::holds_alternative<FreeFlightPath<double>>(path.motion.variant()) && path.turnedAngle >= 0.95 * M_PI)
-    throw std::runtime_error("body '" + body.name + "' turns " + std::to_string(path.turnedAngle) +
-                             " rad within one frame (angular speed " + std::to_string(state.angularVelocity.norm()) +
-                             " rad/s): more than the half turn a step can hold; raise frame_rate");
+    throw SpinOverflow("body '" + body.name + "' turns " + std::to_string(path.turnedAngle) + " rad within " +
+                           std::to_string(t1 - t0) + " s (angular speed " +
+                           std::to_string(state.angularVelocity.norm()) +
+                           " rad/s): more than the half turn a path can hold",
+                       state.angularVelocity.norm());
   if (path.status == FreeFlightStatus::StepCap)
     throw std::runtime_error("body '" + body.name + "': the free-flight integrator ran out of steps");
   return path;
+}
+
+/// A static mesh met at the polygonal level, as the paper's plant is ("collision detection at
+/// the polygonal level", §6): one convex piece per triangle, a thin prism under it (the
+/// triangle and its copy moved back along its normal by a thousandth of the mesh's size),
+/// so that a hull of neighbouring pieces has volume. A static body needs no volume of its
+/// own, and a decomposition into hulls fills the space between thin leaves (the plant's
+/// hulls by HACD came to 9 times its volume), where bodies would bounce off empty air.
+ConvexDecomposition polygonPieces(const TriangleMesh& mesh) {
+  Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+  for (const auto& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const double depth = 1e-3 * (hi - lo).norm();
+  ConvexDecomposition out;
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    if (!(n.norm() > 0)) continue;  // no area: no piece
+    const Eigen::Vector3d back = -depth * n.normalized();
+    out.pieces.push_back({a, b, c, a + back, b + back, c + back});
+  }
+  return out;
 }
 
 std::string bodyField(const BodySpec& body, std::size_t index, const std::string& field) {
@@ -161,7 +194,8 @@ World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene),
         auto found = meshes.find(path);
         if (found == meshes.end()) {
           TriangleMesh mesh = readMesh(path);
-          ConvexDecomposition pieces = decompose(mesh);
+          ConvexDecomposition pieces =
+              spec.isStatic ? polygonPieces(mesh) : decompose(mesh);
           found = meshes.emplace(path, std::make_pair(std::move(mesh), std::move(pieces))).first;
         }
         const TriangleMesh& mesh = found->second.first;
@@ -774,18 +808,55 @@ FrameReport World::step() {
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
   // each a quarter turn of the fastest body at most (collisions can spin a body up within
   // an interval; flyChecked refuses what still does not fit).
+  // A collision can spin a light body up past that within an interval (a cartilage of a
+  // few grams struck at the crash: 370 rad/s); then the frame is run again from its start
+  // in intervals short enough for the new spin (each body's path, version and the pairs'
+  // normals as they were at T0).
   double fastest = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (!bodies_[b].rigid.isStatic()) fastest = std::max(fastest, bodies_[b].path.end.angularVelocity.norm());
-  const int intervals = std::clamp(int(std::ceil(fastest * (T1 - T0) / (0.25 * M_PI))), 1, 64);
-  for (int k = 0; k < intervals; ++k) {
-    const double ta = k == 0 ? T0 : T0 + (T1 - T0) * k / intervals;
-    const double tb = k + 1 == intervals ? T1 : T0 + (T1 - T0) * (k + 1) / intervals;
-    intervalEnd_ = tb;
-    switch (scene_.ordering) {
-      case Ordering::Timewarp: runTimewarp(ta, tb, frame); break;
-      case Ordering::ToiHeap: runToiHeap(ta, tb, frame); break;
-      case Ordering::FixedStep: runFixedStep(ta, tb, frame); break;
+  const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / (0.25 * M_PI), 1e6))); };
+  int intervals = std::clamp(quarterTurns(fastest), 1, 64);
+  std::vector<FreeFlight> paths;
+  std::vector<int> versions;
+  for (const WorldBody& body : bodies_) {
+    paths.push_back(body.path);
+    versions.push_back(body.version);
+  }
+  const auto normals = pairNormal_;
+  const std::size_t traced = trace_.size(), logged = collisionLog_.size();
+  for (;;) {
+    try {
+      for (int k = 0; k < intervals; ++k) {
+        const double ta = k == 0 ? T0 : T0 + (T1 - T0) * k / intervals;
+        const double tb = k + 1 == intervals ? T1 : T0 + (T1 - T0) * (k + 1) / intervals;
+        intervalEnd_ = tb;
+        switch (scene_.ordering) {
+          case Ordering::Timewarp: runTimewarp(ta, tb, frame); break;
+          case Ordering::ToiHeap: runToiHeap(ta, tb, frame); break;
+          case Ordering::FixedStep: runFixedStep(ta, tb, frame); break;
+        }
+      }
+      break;
+    } catch (const SpinOverflow& spin) {
+      const int needed = std::max(2 * intervals, quarterTurns(spin.angularSpeed));
+      if (needed > 4096)
+        throw std::runtime_error(std::string(spin.what()) + " even in " + std::to_string(intervals) +
+                                 " intervals of a frame; raise frame_rate");
+      for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        bodies_[b].path = paths[b];
+        bodies_[b].version = versions[b] + 1;  // events computed on the abandoned run are stale
+      }
+      pairNormal_ = normals;
+      trace_.resize(traced);
+      collisionLog_.resize(logged);
+      intervals = needed;
+      const PartTimes parts = frame.report.parts;  // the abandoned run's wall time still counts
+      frame = FrameState{};
+      frame.pieces.resize(bodies_.size());
+      frame.report.frame = frame_ + 1;
+      frame.report.time = T1;
+      frame.report.parts = parts;
     }
   }
   // The frame is final: the global virtual time has passed T1, its history is discarded.
