@@ -348,7 +348,10 @@ int main(int argc, char** argv) {
   try {
     if (!statsRuns.empty()) {
       std::string command = "08_torso";
-      for (int a = 1; a < argc; ++a) command += std::string(" ") + argv[a];
+      for (int a = 1; a < argc; ++a) {
+        const std::string arg = argv[a];
+        command += arg.find(' ') == std::string::npos ? " " + arg : " \"" + arg + "\"";
+      }
       statsTable(statsRuns, table, command);
       return 0;
     }
