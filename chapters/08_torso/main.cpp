@@ -219,7 +219,7 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run) {
   }
   const bool twoPanels = hi / lo > 30;
   std::ofstream csv(folder + "/" + name + ".csv");
-  csv << "# written by 08_torso from " << run.folder << "/frames.csv: execution time of each frame over its simulated "
+  csv << "# written by 08_torso from the frames.csv of the run " << std::filesystem::path(run.folder).filename().string() << ": execution time of each frame over its simulated "
       << "time, the top of each part stacked bottom to top, at the frame's start and end (a step per frame)\ntime";
   for (const auto& part : parts) csv << ',' << part.first;
   csv << '\n';
