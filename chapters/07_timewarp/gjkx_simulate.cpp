@@ -4,12 +4,16 @@
 //
 // writes DIR/frames.csv (per frame: frame, time, wall seconds, collision checks,
 // collisions, rollbacks, Brent iterations, photo finishes, deepest penetration, then the
-// other counters and the wall time by part), DIR/bodies.csv (per frame and body: name,
+// other counters, the wall time by part and the queries that ran Brent), DIR/bodies.csv (per frame and body: name,
 // position, orientation [w x y z], velocity, angular velocity, kinetic energy), shows a
 // progress bar on a terminal, and ends with one line a script can read:
 //
 //   SUMMARY frames=N sim_s=... wall_s=... collisions=N rollbacks=N brent_mean=...
 //           brent_max=N photo_finish=... max_penetration=... tunnelled=N
+//
+// which is also written to DIR/summary.txt, followed by a line saying how the run was made
+// (RUN scene=... bodies=N scalar=... variant=... ordering=... tolerance=... frame_rate=...
+// checks=on|off), so that a kept run says what it is.
 //
 // A scene with bad input is rejected before the run (exit status 1, the message names the
 // body and the field); a bad command line exits 2.
@@ -43,6 +47,7 @@ int main(int argc, char** argv) {
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
                "gjkx_simulate"};
   std::string scenePath, out = ".", ordering, scalar, variant = "certified";
+  double tolerance = 0;
   bool noChecks = false, quiet = false;
   app.add_option("scene", scenePath, "the scene file (JSON)")->required();
   app.add_option("--out", out, "folder for frames.csv and bodies.csv (created)");
@@ -51,6 +56,8 @@ int main(int argc, char** argv) {
   app.add_option("--scalar", scalar, "override the scene's scalar type")->check(CLI::IsMember({"float", "double"}));
   app.add_option("--variant", variant, "the extrusion test: the paper's or the certified one")
       ->check(CLI::IsMember({"paper", "certified"}));
+  app.add_option("--tolerance", tolerance, "override the scene's collision tolerance (length units)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--no-checks", noChecks, "skip the independent checks (penetration, tunnelling): report them as -1");
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
@@ -64,6 +71,7 @@ int main(int argc, char** argv) {
     if (ordering == "fixed_step") scene.ordering = gjkx::Ordering::FixedStep;
     if (scalar == "float") scene.scalar = gjkx::CollisionScalar::Float;
     if (scalar == "double") scene.scalar = gjkx::CollisionScalar::Double;
+    if (tolerance > 0) scene.collisionTolerance = tolerance;
     gjkx::WorldSettings settings;
     settings.variant = variant == "paper" ? gjkx::ExtrusionVariant::Paper : gjkx::ExtrusionVariant::Certified;
     settings.checks = !noChecks;
@@ -80,7 +88,7 @@ int main(int argc, char** argv) {
   }
   frames << "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,"
             "max_penetration,events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,"
-            "tunnelled,integration_s,bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s\n";
+            "tunnelled,integration_s,bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries\n";
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
   long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
@@ -106,7 +114,7 @@ int main(int argc, char** argv) {
              << c.events << ',' << c.microcollisions << ',' << c.bodiesRolledBack << ',' << c.brentMax << ','
              << c.completeTests << ',' << c.solverCaps << ',' << (noChecks ? -1 : c.tunnelled) << ','
              << p.integration << ',' << p.bounds << ',' << p.collisionDetection << ',' << p.impulses << ','
-             << p.ordering << ',' << p.checks << '\n';
+             << p.ordering << ',' << p.checks << ',' << c.brentQueries << '\n';
       for (std::size_t b = 0; b < world->bodies().size(); ++b) {
         const gjkx::BodyState s = world->stateOf(int(b));
         const Eigen::Vector3d x = world->positionOf(int(b));
@@ -127,11 +135,19 @@ int main(int argc, char** argv) {
   if (bar) std::fprintf(stderr, "\n");
   // Brent's iterations per query that needed it (the paper: 2.2 on average, 43 at worst),
   // and the share of those that ended in a photo finish (the paper: 70% false alarms).
-  std::printf("SUMMARY frames=%d sim_s=%.6g wall_s=%.6g collisions=%ld rollbacks=%ld brent_mean=%.4g brent_max=%d "
-              "photo_finish=%.4g max_penetration=%.6g tunnelled=%d\n",
-              world->frameCount(), world->time(), wall, collisions, rollbacks,
-              brentQueries > 0 ? double(brent) / double(brentQueries) : 0.0, brentMax,
-              brentQueries > 0 ? double(photo) / double(brentQueries) : 0.0, noChecks ? -1.0 : maxPenetration,
-              noChecks ? -1 : tunnelled);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "SUMMARY frames=%d sim_s=%.6g wall_s=%.6g collisions=%ld rollbacks=%ld brent_mean=%.4g brent_max=%d "
+                "photo_finish=%.4g max_penetration=%.6g tunnelled=%d",
+                world->frameCount(), world->time(), wall, collisions, rollbacks,
+                brentQueries > 0 ? double(brent) / double(brentQueries) : 0.0, brentMax,
+                brentQueries > 0 ? double(photo) / double(brentQueries) : 0.0, noChecks ? -1.0 : maxPenetration,
+                noChecks ? -1 : tunnelled);
+  std::printf("%s\n", line);
+  std::ofstream summary(out + "/summary.txt");
+  summary << line << "\nRUN scene=" << scenePath << " bodies=" << world->bodies().size()
+          << " scalar=" << (scene.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " variant=" << variant
+          << " ordering=" << gjkx::orderingName(scene.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
+          << " checks=" << (noChecks ? "off" : "on") << "\n";
   return 0;
 }

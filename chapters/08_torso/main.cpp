@@ -8,14 +8,24 @@
 //                           settled, read from a kept run of gjkx_simulate on the scene of
 //                           gjkx_generate_torso (seed 1), figures/data/torso-run/bodies.csv.
 //                           Without that run only the start is drawn, and a warning says so.
-// Options: --run DIR reads DIR/bodies.csv instead; --frames DIR writes one PNG per frame of
-// the run (an animation); --seed N and --reduced must match how the run's scene was made.
+//   fig06-torso-running-time.png: Fig. 6, "Running Time for Torso-Plant Simulation": the
+//                           execution time of each frame over its simulated time, stacked
+//                           by part, against simulated time, drawn by gnuplot from the same
+//                           run's frames.csv (script and data in data/ of the figures
+//                           folder). Without the run, or without gnuplot, it is skipped.
+// Options: --run DIR reads DIR/bodies.csv and DIR/frames.csv instead; --frames DIR writes one
+// PNG per frame of the run (an animation); --seed N and --reduced must match how the run's
+// scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
+// of the paper's statistics for the runs (run_stats.hpp).
 #include "../chapter.hpp"
+#include "run_stats.hpp"
 #include "torso_model.hpp"
 
 #include <gjkx/render/canvas.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -170,6 +180,149 @@ void modelFigure(const std::string& out) {
   chapter::wrote(path);
 }
 
+/// How `run` was made, in words, from its summary.txt (RUN scene=... bodies=N scalar=...):
+/// "8 bodies, float, certified extrusion test, tolerance 0.000345, 24 frames/s" and the
+/// scene's folder; "settings unknown" without summary.txt.
+std::string runDescription(const torso::Run& run) {
+  std::map<std::string, std::string> key;
+  std::stringstream words(run.settings);
+  for (std::string w; words >> w;)
+    if (const auto eq = w.find('='); eq != std::string::npos) key[w.substr(0, eq)] = w.substr(eq + 1);
+  if (key.empty()) return run.folder + " (no summary.txt: settings unknown)";
+  const std::filesystem::path scene(key["scene"]);
+  return key["bodies"] + " bodies (" + scene.parent_path().filename().string() + "/" + scene.filename().string() +
+         "), " + key["scalar"] + ", " + key["variant"] + " extrusion test, tolerance " + key["tolerance"] + ", " +
+         key["frame_rate"] + " frames/s";
+}
+
+/// Fig. 6 from `run`'s frames.csv: per frame, the method's wall time over the frame's
+/// simulated time, stacked by part (methodParts()), against the time at the frame's end;
+/// the real-time line y = 1 and the paper's range 1.0-7.9 for comparison. When the frames
+/// and the paper's range span more than a factor 30, a stack on a log axis would misstate
+/// the parts' shares, so the figure has two panels on one time axis: above, the total on a
+/// log axis against real time and the paper; below, the stack by part on a linear axis.
+/// Writes OUT/data/fig06-torso-running-time.csv (the stacked values) and .gp, then runs
+/// gnuplot there; returns false (and says why) when gnuplot is missing or fails.
+bool runningTimeFigure(const std::string& out, const torso::Run& run) {
+  using P = torso::PaperFigures;
+  const auto& parts = torso::methodParts();
+  const std::string folder = out + "/data", name = "fig06-torso-running-time";
+  std::filesystem::create_directories(folder);
+  double lo = P::ratioMin, hi = P::ratioMax, ours = 0, wall = 0, checks = 0;
+  for (std::size_t k = 0; k < run.frames(); ++k) {
+    const double r = run.ratio(k);
+    if (r > 0) lo = std::min(lo, r);
+    hi = std::max(hi, r);
+    ours = std::max(ours, r);
+    wall += run.at("wall_s")[k];
+    checks += run.at("checks_s")[k];
+  }
+  const bool twoPanels = hi / lo > 30;
+  std::ofstream csv(folder + "/" + name + ".csv");
+  csv << "# written by 08_torso from the frames.csv of the run " << std::filesystem::path(run.folder).filename().string() << ": execution time of each frame over its simulated "
+      << "time, the top of each part stacked bottom to top, at the frame's start and end (a step per frame)\ntime";
+  for (const auto& part : parts) csv << ',' << part.first;
+  csv << '\n';
+  for (std::size_t k = 0; k < run.frames(); ++k) {
+    std::string row;
+    double sum = 0;
+    for (const auto& part : parts) {
+      sum += run.at(part.first)[k] / run.frameLength(k);
+      char cell[32];
+      std::snprintf(cell, sizeof cell, ",%.6g", sum);
+      row += cell;
+    }
+    csv << run.at("time")[k] - run.frameLength(k) << row << '\n' << run.at("time")[k] << row << '\n';
+  }
+  csv.close();
+
+  const char* colours[] = {"#4e79a7", "#59a14f", "#e15759", "#f28e2b", "#b07aa1"};
+  const std::string data = "'" + name + ".csv' skip 2";
+  const int total = int(parts.size()) + 1;  // the column of the top of the stack
+  char band[120], checksNote[160];
+  std::snprintf(band, sizeof band, "paper (500 MHz Pentium III): %.1f to %.1f", P::ratioMin, P::ratioMax);
+  std::snprintf(checksNote, sizeof checksNote, "(not the method): %.0f%% of wall time",
+                100 * (wall > 0 ? checks / wall : 0));
+  std::ofstream gp(folder + "/" + name + ".gp");
+  gp << "# gnuplot script written by 08_torso (chapter 08): gnuplot " << name << ".gp\n";
+  gp << "set terminal pngcairo size 1200," << (twoPanels ? 860 : 620) << " font 'sans,11'\nset output '../" << name << ".png'\n";
+  gp << "set datafile separator ','\nset termoption noenhanced\n";
+  gp << "set xrange [0:" << run.at("time").back() << "]\nset grid ytics lc rgb '#dddddd'\n";
+  gp << "set lmargin at screen 0.08\nset rmargin at screen 0.64\n";
+  gp << "set key at screen 0.655, graph 1 left top Left reverse samplen 2 spacing 1.2\n";
+  gp << "set style fill solid 0.9 noborder\n";
+  gp << "set multiplot title \"Fig. 6: running time of the torso-plant simulation\\n" << runDescription(run)
+     << "\" font ',12'\n";
+  // The paper's range and real time, with our total (the whole stack) or the stack itself.
+  const std::string paperAndRealTime = std::to_string(P::ratioMin) + " with filledcurves y=" + std::to_string(P::ratioMax) +
+                                       " fs transparent solid 0.25 lc rgb '#999999' title '" + band + "', \\\n     " +
+                                       std::to_string(P::ratioMax) + " with lines dt 2 lw 1.5 lc rgb '#777777' notitle, \\\n     " +
+                                       std::to_string(P::ratioMin) + " with lines lw 2 lc rgb '#000000' title 'real time (execution = simulation)'";
+  auto stack = [&](bool withBand) {
+    gp << "plot ";
+    for (std::size_t p = parts.size(); p-- > 0;)
+      gp << data << " using 1:" << (p == 0 ? std::string("(0)") : std::to_string(p + 1)) << ":" << p + 2
+         << " with filledcurves lc rgb '" << colours[p] << "' title '" << parts[p].second << "', \\\n     ";
+    gp << "NaN with lines lc rgb '#ffffff' title 'drawing: none (gjkx_simulate draws no image)', \\\n     ";
+    gp << "NaN with lines lc rgb '#ffffff' title 'not stacked: the independent checks', \\\n     ";
+    gp << "NaN with lines lc rgb '#ffffff' title '" << checksNote << "'";
+    if (withBand) gp << ", \\\n     " << paperAndRealTime;
+    gp << "\n";
+  };
+  if (twoPanels) {
+    const double bottom = std::pow(10.0, std::floor(std::log10(lo)));
+    const double top = std::pow(10.0, std::ceil(std::log10(hi * 1.5)));
+    gp << "set tmargin at screen 0.89\nset bmargin at screen 0.56\n";
+    gp << "set logscale y\nset format y '%g'\nset yrange [" << bottom << ":" << top << "]\nset format x ''\n";
+    gp << "set ylabel 'execution / simulation time' offset 1,0\n";
+    gp << "plot " << paperAndRealTime << ", \\\n     " << data << " using 1:($" << total << " > " << bottom << " ? $" << total
+       << " : " << bottom << ") with lines lw 2 lc rgb '" << colours[2] << "' title 'ours: every part (the top of the stack below)'\n";
+    gp << "unset logscale y\nset format x '%g'\nset tmargin at screen 0.50\nset bmargin at screen 0.08\n";
+    gp << "set yrange [0:" << ours * 1.1 << "]\nset format y '%g'\n";
+    gp << "set ylabel 'execution / simulation time (linear: the parts)' offset 1,0\nset xlabel 'simulated time (s)'\n";
+    stack(false);
+  } else {
+    gp << "set tmargin at screen 0.87\nset bmargin at screen 0.11\nset yrange [0:" << hi * 1.1 << "]\n";
+    gp << "set ylabel 'execution time / simulation time'\nset xlabel 'simulated time (s)'\n";
+    stack(true);
+  }
+  gp << "unset multiplot\n";
+  gp.close();
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
+    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".gp, skipped Fig. 6\n";
+    return false;
+  }
+  const std::string command = "cd '" + folder + "' && gnuplot '" + name + ".gp'";
+  if (std::system(command.c_str()) != 0) {
+    std::cerr << "08_torso: gnuplot failed on " << folder << "/" << name << ".gp\n";
+    return false;
+  }
+  chapter::wrote(out + "/" + name + ".png");
+  return true;
+}
+
+/// The statistics table of the runs `specs` ("LABEL=DIR" or "DIR", labelled by the folder's
+/// name) written to `table`.
+void statsTable(const std::vector<std::string>& specs, const std::string& table, const std::string& command) {
+  std::vector<std::pair<std::string, torso::Run>> runs;
+  for (const std::string& spec : specs) {
+    const auto eq = spec.find('=');
+    const std::string dir = eq == std::string::npos ? spec : spec.substr(eq + 1);
+    const std::string label =
+        eq == std::string::npos ? std::filesystem::path(dir).lexically_normal().filename().string() : spec.substr(0, eq);
+    runs.emplace_back(label, torso::readRun(dir));
+  }
+  const std::string md = torso::statsTable(runs, command);
+  if (table.empty() || table == "-") {
+    std::cout << md;
+    return;
+  }
+  if (std::filesystem::path(table).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(table).parent_path());
+  std::ofstream file(table);
+  if (!(file << md)) throw std::runtime_error(table + ": cannot write the table");
+  chapter::wrote(table);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -178,15 +331,31 @@ int main(int argc, char** argv) {
   std::string out = ".", run = GJKX_TORSO_RUN, framesDir;
   std::uint32_t seed = 1;
   bool reduced = false;
+  std::vector<std::string> statsRuns;
+  std::string table;
   app.add_option("--out", out, "the folder for the PNG files, created if needed")->capture_default_str();
   app.add_option("--run", run, "the folder of the run (bodies.csv of gjkx_simulate)")->capture_default_str();
   app.add_option("--frames", framesDir, "also write one PNG per frame of the run into this folder");
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
       ->capture_default_str();
   app.add_flag("--reduced", reduced, "the run is of the reduced scene (gjkx_generate_torso --reduced)");
+  app.add_option("--stats", statsRuns,
+                 "draw nothing: tabulate the paper's statistics for these runs (folders of gjkx_simulate, each "
+                 "LABEL=DIR or DIR), one column each")
+      ->type_name("[LABEL=]DIR ...");
+  app.add_option("--table", table, "with --stats: the markdown file to write (default: standard output)");
   chapter::parseOrExit(app, argc, argv);
-  std::filesystem::create_directories(out);
   try {
+    if (!statsRuns.empty()) {
+      std::string command = "08_torso";
+      for (int a = 1; a < argc; ++a) {
+        const std::string arg = argv[a];
+        command += arg.find(' ') == std::string::npos ? " " + arg : " \"" + arg + "\"";
+      }
+      statsTable(statsRuns, table, command);
+      return 0;
+    }
+    std::filesystem::create_directories(out);
     modelFigure(out);
     const torso::SceneLayout layout = torso::layoutScene(seed, reduced);
     std::vector<Frame> frames;
@@ -220,6 +389,11 @@ int main(int argc, char** argv) {
       canvas.savePng(out + "/fig05-torso-crash.png");
     }
     chapter::wrote(out + "/fig05-torso-crash.png");
+    if (std::filesystem::exists(run + "/frames.csv"))
+      runningTimeFigure(out, torso::readRun(run));
+    else
+      std::cerr << "08_torso: warning: no kept run at " << run
+                << "/frames.csv; Fig. 6 (fig06-torso-running-time.png) skipped\n";
     if (!framesDir.empty()) {
       if (frames.empty()) throw std::runtime_error("--frames needs a run: " + run + "/bodies.csv is missing");
       std::filesystem::create_directories(framesDir);
