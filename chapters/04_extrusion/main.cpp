@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -84,12 +85,13 @@ Color timeColour(double t) {
 
 // A body at time t: in between (outlined in its time's colour), outlined (t_0), filled
 // (t_1), or at the time of impact.
-enum class Look { Faint, Start, End, Impact };
+enum class Look { Faint, Start, End, Impact, Chain };
 void drawBody(Canvas& c, const Body& b, double t, bool isP, Look look) {
   const Color stroke = isP ? palette::bodyPStroke : palette::bodyQStroke;
   const Color fill = isP ? palette::bodyPFill : palette::bodyQFill;
   ShapeStyle shape{fill, Stroke{stroke, style::lineThin}};
   if (look == Look::Faint) shape = ShapeStyle{timeColour(t).withAlpha(0.05), Stroke{timeColour(t).withAlpha(0.75), 1.3}};
+  if (look == Look::Chain) shape = ShapeStyle{timeColour(t).withAlpha(0.12), Stroke{timeColour(t), 2.0}};
   if (look == Look::Start) shape.fill = palette::none;
   if (look == Look::Impact) shape = ShapeStyle{palette::highlight.withAlpha(0.45), Stroke{stroke, style::lineThick}};
   std::vector<P2> outline;
@@ -144,13 +146,22 @@ void drawPair(Canvas& c, const Pair& pair, int between) {
   drawMotion(c, pair.Q, "Q", pair.sideQ, false);
 }
 
-// The line normal to the unit s halfway between P(t) and Q(t), near them: a separating line when SD > 0.
-void drawSeparatingLine(Canvas& c, const Pair& pair, const V& s, double t, const std::string& name) {
+// The point of the line normal to the unit s halfway between P(t) and Q(t) nearest the
+// midpoint of their centres.
+P2 lineMiddle(const Pair& pair, const V& s, double t) {
   const double offset = 0.5 * (s.dot(pair.P.support(s, t)) + s.dot(pair.Q.support(-s, t)));
   const P2 foot = offset * xy(s), along(-s.y(), s.x());
-  const P2 middle = foot + along * along.dot(0.5 * (xy(pair.P.at(t).center()) + xy(pair.Q.at(t).center())) - foot);
-  c.line(middle - 1.8 * along, middle + 1.8 * along, Stroke{palette::ink, 1.2, style::dashed});
-  c.text(middle + 1.8 * along, name, TextStyle{Font::Math, style::labelSize, palette::ink, 2.5}, chapter::toward(along));
+  return foot + along * along.dot(0.5 * (xy(pair.P.at(t).center()) + xy(pair.Q.at(t).center())) - foot);
+}
+
+// That line, `halfLength` long either side of lineMiddle: a separating line when SD > 0.
+// Its label `name` goes at its end `end` (+1 or -1).
+void drawSeparatingLine(Canvas& c, const Pair& pair, const V& s, double t, const std::string& name,
+                        const Color& color = palette::ink, double halfLength = 1.8, double end = 1) {
+  const P2 middle = lineMiddle(pair, s, t), along = end * P2(-s.y(), s.x());
+  c.line(middle - halfLength * along, middle + halfLength * along, Stroke{color, 1.4, style::dashed});
+  if (!name.empty())
+    c.text(middle + halfLength * along, name, TextStyle{Font::Math, style::labelSize, color, 2.5}, chapter::toward(along));
 }
 
 // What the extrusion test found: the separating vector, as a separating line at t_0 and at
@@ -167,6 +178,137 @@ void drawFound(Canvas& c, const Pair& pair, const ExtrusionResult<double>& test,
   c.arrow(xy(toi.witnessP), tip, Stroke{palette::ink, style::lineThick});
   c.point(xy(toi.witnessP), palette::witness, 4);
   c.text(tip, "n", TextStyle{Font::Math, style::labelSize, palette::ink, 2.5}, chapter::toward(xy(toi.normal)));
+}
+
+// ---- The photo finish's chain (§5) -------------------------------------------------
+// "a 'photo finish', in which the extrusion test fails for the complete time interval t_0
+// to t_1 but succeeds when performed on the sequence of intervals t_0 to t_{x1}, t_{x1} to
+// t_{x2}, ... t_{xn}, to t_1": every link of the chain has a vector that separates the
+// bodies at both of its ends, hence (linear motion) all through it.
+
+// One link [from, to] of the chain, and the unit vector of its complete test that separates
+// the bodies at both of its ends by the most.
+struct Link {
+  double from, to;
+  V s;
+};
+
+// The links of a photo finish from the solver's complete tests: test k covers
+// [its start, the next test's start], the last one [its start, t_1].
+std::vector<Link> chainOf(const Pair& pair, const ToiTrace<double>& trace) {
+  std::vector<Link> chain;
+  const auto& tests = trace.intervals;
+  for (std::size_t k = 0; k < tests.size(); ++k) {
+    const double from = tests[k].start, to = k + 1 < tests.size() ? tests[k + 1].start : t1;
+    if (!(to > from)) continue;
+    Link link{from, to, V::UnitX()};
+    double best = -std::numeric_limits<double>::infinity();
+    for (int j = 0; j < tests[k].separating.count; ++j) {
+      const V s = tests[k].separating.vectors[j].normalized();
+      const double margin = std::min(supportingDistanceAt(pair.P, pair.Q, s, from), supportingDistanceAt(pair.P, pair.Q, s, to));
+      if (margin > best) best = margin, link.s = s;
+    }
+    chain.push_back(link);
+  }
+  return chain;
+}
+
+// The name of the k-th end of a chain of n links: t_0, t_{x1}, ..., t_{xn-1}, t_1.
+std::string endName(std::size_t k, std::size_t links) {
+  return k == 0 ? "t_0" : k == links ? "t_1" : "t_{x" + std::to_string(k) + "}";
+}
+// A link's colour: the time ramp's at its middle.
+Color linkColour(const Link& link) { return timeColour(0.5 * (link.from + link.to)); }
+
+// The colour of a Brent step kind, in the order of BrentStepKind, as in chapter 05's figures.
+Color kindColour(BrentStepKind kind) {
+  static const Color colors[] = {Color::hex(0x9E9E9E), palette::ink, palette::highlight, Color::hex(0xCC79A7),
+                                 Color::hex(0x009E73)};
+  return colors[static_cast<int>(kind)];
+}
+const char* kindName(BrentStepKind kind) {
+  switch (kind) {
+    case BrentStepKind::Bisection: return "bisection";
+    case BrentStepKind::Secant: return "secant";
+    case BrentStepKind::InverseQuadratic: return "inverse quadratic";
+    case BrentStepKind::MinimalStep: return "minimal step";
+    case BrentStepKind::Leap: return "leap";
+  }
+  return "?";
+}
+
+// The world point under canvas pixel (px, py) of the current panel.
+P2 worldAt(Canvas& c, double px, double py) {
+  const P2 origin = c.toPixel(P2(0, 0));
+  const double k = c.pixelsPerUnit();
+  return P2((px - origin.x()) / k, (origin.y() - py) / k);
+}
+
+// The chain in the panel: both bodies at each end t_{xi} inside [t_0, t_1], outlined in
+// its time's colour, and each link's separating line at the poses of both of its ends, in
+// the link's colour. Below, the chain as a time line: a bar per link from t_0 to t_1, and
+// above it the Brent iterates that found the ends, coloured by the rule that chose them.
+void drawChain(Canvas& c, const Pair& pair, const ToiTrace<double>& trace, const std::vector<Link>& chain) {
+  for (std::size_t k = 1; k < chain.size(); ++k)
+    for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, chain[k].from, b == &pair.P, Look::Chain);
+  // The lines' names go at one of their ends, clear of the bodies' labels and each other:
+  // above a line flatter than 45 degrees, else at the end farther from them.
+  std::vector<P2> labels;
+  for (double t : {t0, t1})
+    for (const P2& label : {xy(pair.P.at(t).support(pair.sideP)), xy(pair.Q.at(t).support(pair.sideQ))})
+      labels.push_back(label);
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    const std::string name = "[" + endName(k, chain.size()) + ", " + endName(k + 1, chain.size()) + "]";
+    const V& s = chain[k].s;
+    const Color color = linkColour(chain[k]);
+    const double halfLength = std::min(1.6, 1.25 / std::max(std::abs(s.x()), 1e-3));
+    const P2 middle = lineMiddle(pair, s, chain[k].to), up = s.x() >= 0 ? P2(-s.y(), s.x()) : P2(s.y(), -s.x());
+    const auto clearance = [&](const P2& at) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const P2& label : labels) nearest = std::min(nearest, (at - label).norm());
+      return nearest;
+    };
+    const bool flat = std::abs(up.y()) < std::sqrt(0.5);
+    const double end = flat || clearance(middle + halfLength * up) >= clearance(middle - halfLength * up) ? 1 : -1;
+    drawSeparatingLine(c, pair, s, chain[k].from, "", color, halfLength, end);
+    const P2 tip = middle + end * halfLength * up;
+    drawSeparatingLine(c, pair, s, chain[k].to, "", color, halfLength, end);
+    c.text(tip, name, TextStyle{Font::Math, style::labelSize, color, 2.5}, flat ? Anchor::Above : chapter::toward(end * up));
+    labels.push_back(tip);
+  }
+  // The time line, in pixels at the foot of the plot area.
+  const PixelRect area = c.plotArea();
+  const double y = area.y + area.height - 24, left = area.x + 58, right = area.x + area.width - 150;
+  const auto X = [&](double t) { return left + (right - left) * (t - t0) / (t1 - t0); };
+  const auto line = [&](double xa, double ya, double xb, double yb, const Stroke& stroke) {
+    c.line(worldAt(c, xa, ya), worldAt(c, xb, yb), stroke);
+  };
+  const TextStyle small{Font::Sans, 12.5, palette::ink, 2.0, palette::background};
+  c.textAtPixel(left - 10, y, "chain", small, Anchor::Left);
+  for (const Link& link : chain) line(X(link.from) + 1.5, y, X(link.to) - 1.5, y, Stroke{linkColour(link), 8});
+  for (std::size_t k = 0; k <= chain.size(); ++k) {
+    const double x = X(k < chain.size() ? chain[k].from : t1);
+    line(x, y - 7, x, y + 7, Stroke{palette::ink, 1.2});
+    c.textAtPixel(x, y + 9, endName(k, chain.size()), TextStyle{Font::Math, 13, palette::ink, 2.0, palette::background},
+                  Anchor::Below);
+  }
+  std::vector<BrentStepKind> kinds;  // the kinds seen, in order of first use
+  std::vector<std::pair<double, int>> placed;
+  for (const auto& step : trace.steps) {
+    int stacked = 0;
+    for (const auto& [x, n] : placed)
+      if (std::abs(x - X(step.t)) < 6) stacked = std::max(stacked, n + 1);
+    placed.push_back({X(step.t), stacked});
+    c.point(worldAt(c, X(step.t), y - 14 - 8 * stacked), kindColour(step.kind), 3.5, Stroke{palette::background, 1});
+    if (std::find(kinds.begin(), kinds.end(), step.kind) == kinds.end()) kinds.push_back(step.kind);
+  }
+  double ly = y - 16 - 15 * (kinds.size() - 1);
+  c.textAtPixel(right + 16, ly - 16, "Brent iterates:", small, Anchor::Right);
+  for (BrentStepKind kind : kinds) {
+    c.textAtPixel(right + 16, ly, "\u25cf", TextStyle{Font::SansBold, 12, kindColour(kind)}, Anchor::Right);
+    c.textAtPixel(right + 30, ly, kindName(kind), small, Anchor::Right);
+    ly += 15;
+  }
 }
 
 // Panel (col, row) of a grid of w x h cells, less a band of `band` pixels below it for the verdicts.
@@ -272,9 +414,15 @@ void figure4(const std::string& out, const std::vector<std::pair<Pair, std::stri
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const Pair& pair = panels[k].first;
     panel(c, int(k % 2), int(k / 2), W, H, 50, panels[k].second);
-    drawPair(c, pair, 6);
     const auto test = extrusionTest(pair.P, pair.Q, t0, t1);
-    const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1);
+    ToiTrace<double> trace;
+    const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1, {}, &trace);
+    if (toi.status == ToiStatus::PhotoFinish) {  // the chain's poses instead of evenly spaced ones
+      drawPair(c, pair, 1);
+      drawChain(c, pair, trace, chainOf(pair, trace));
+    } else {
+      drawPair(c, pair, 6);
+    }
     drawFound(c, pair, test, toi);
     const bool truth = collides(pair), extruded = reportsCollision(toi.status);
     std::string text = solverVerdict(test, toi);  // a photo finish: a chain of restarts + 1 intervals
@@ -423,8 +571,8 @@ int main(int argc, char** argv) {
             V(0, -1, 0), V(0, 1, 0), -4.2, 4.2, -1.6, 1.6},
        "(b) head-on collision"},
       {Pair{body(triangle, glide(V(-3, -0.55, 0), V(6, 0, 0))), body(wedge, glide(V(3, 0.62, 0), V(-6, 0, 0))), V(0, -1, 0),
-            V(0, 1, 0), -4.2, 4.2, -1.8, 1.8},
-       "(c) glancing near miss"},
+            V(0, 1, 0), -4.2, 4.2, -2.6, 1.6},
+       "(c) glancing near miss: a photo finish"},
       {Pair{body(triangle, glide(V(-3.6, 0, 0), V(7, 0.2, 0))), body(box(0.9, 0.9), glide(V(-1.2, 0.1, 0), V(3, 0, 0))),
             V(0, -1, 0), V(0, 1, 0), -4.5, 4.5, -1.6, 1.6},
        "(d) overtaking"}};
