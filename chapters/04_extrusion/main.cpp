@@ -69,6 +69,7 @@ struct Pair {
   Body P, Q;
   V sideP, sideQ;
   double xmin, xmax, ymin, ymax;
+  bool keyAbove = false;  ///< the time key in the upper left corner, not the lower left
 };
 
 // The colour of time t in [t_0, t_1], shared by both bodies, so that the poses of P and Q
@@ -119,7 +120,7 @@ void drawMotion(Canvas& c, const Body& b, const std::string& name, const V& side
 // with a tick at each pose in between.
 void drawTimeKey(Canvas& c, const Pair& pair, int between) {
   const double w = pair.xmax - pair.xmin, h = pair.ymax - pair.ymin;
-  const P2 from(pair.xmin + 0.05 * w, pair.ymin + 0.05 * h), to = from + P2(0.25 * w, 0);
+  const P2 from(pair.xmin + 0.05 * w, pair.keyAbove ? pair.ymax - 0.08 * h : pair.ymin + 0.05 * h), to = from + P2(0.25 * w, 0);
   constexpr int pieces = 40;
   for (int k = 0; k < pieces; ++k)
     c.line(from + (to - from) * k / pieces, from + (to - from) * (k + 1) / pieces, Stroke{timeColour(t0 + (t1 - t0) * (k + 0.5) / pieces), 5});
@@ -134,12 +135,12 @@ void drawTimeKey(Canvas& c, const Pair& pair, int between) {
 
 // Both bodies at t_0 and t_1, `between` - 1 poses in between (both bodies' poses at the same
 // instant outlined in that instant's colour, with the key), and their motions.
-void drawPair(Canvas& c, const Pair& pair, int between) {
+void drawPair(Canvas& c, const Pair& pair, int between, bool key = true) {
   c.setWorldWindow(pair.xmin, pair.xmax, pair.ymin, pair.ymax);
   c.setClip(c.plotArea());
   for (int k = 1; k < between; ++k)
     for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t0 + (t1 - t0) * k / between, b == &pair.P, Look::Faint);
-  if (between > 1) drawTimeKey(c, pair, between);
+  if (between > 1 && key) drawTimeKey(c, pair, between);
   for (const auto& [t, look] : {std::pair{t0, Look::Start}, std::pair{t1, Look::End}})
     for (const Body* b : {&pair.P, &pair.Q}) drawBody(c, *b, t, b == &pair.P, look);
   drawMotion(c, pair.P, "P", pair.sideP, true);
@@ -311,9 +312,111 @@ void drawChain(Canvas& c, const Pair& pair, const ToiTrace<double>& trace, const
   }
 }
 
+// ---- Space-time: x against t (Fig. 1, row A) -----------------------------------------
+// "Extrusion intersection tests take a four-dimensional approach": each body swept through
+// time is a solid in space-time, and the test asks whether the two solids meet. With x
+// across and t upwards, a body's x-extent over [t_0, t_1] is a band: slanted while it
+// moves, upright while it rests. In row A the bodies' y-extents overlap at every instant,
+// so the bands meet exactly when the bodies do, and x against t shows all there is.
+// The inset lies under the bodies, on the panel's own x axis, t from t_0 at `bottom` to t_1 at `top`.
+enum class SpaceTime { Static, Sweeping, Extrusion };
+
+// The x-extent [lo, hi] of a body at time t.
+std::pair<double, double> xExtent(const Body& b, double t) {
+  return {b.at(t).support(V(-1, 0, 0)).x(), b.at(t).support(V(1, 0, 0)).x()};
+}
+
+void drawSpaceTime(Canvas& c, const Pair& pair, SpaceTime mode, double bottom, double top, const ToiResult<double>* toi) {
+  const auto Y = [&](double t) { return bottom + (top - bottom) * (t - t0) / (t1 - t0); };
+  constexpr int samples = 64;
+  const double axisX = pair.xmin + 0.4, right = pair.xmax - 0.1;
+  const TextStyle small{Font::Math, 13, palette::ink, 2.0, palette::background};
+  const TextStyle note{Font::Sans, 12, palette::ink, 2.0, palette::background};
+  // The axes: t upwards, coloured by the time ramp (the key of the poses above), and x.
+  for (int k = 0; k < 40; ++k)
+    c.line(P2(axisX, Y(t0 + (t1 - t0) * k / 40)), P2(axisX, Y(t0 + (t1 - t0) * (k + 1) / 40)),
+           Stroke{timeColour(t0 + (t1 - t0) * (k + 0.5) / 40), 4});
+  c.arrow(P2(axisX, Y(t1)), P2(axisX, Y(t1) + 0.35), Stroke{palette::ink, 1.0}, 7);
+  c.text(P2(axisX, Y(t1) + 0.35), "t", small, Anchor::Left);
+  c.arrow(P2(axisX, bottom - 0.12), P2(right, bottom - 0.12), Stroke{palette::ink, 1.0}, 7);
+  c.text(P2(right, bottom - 0.12), "x", small, Anchor::Above);
+  c.text(P2(axisX, Y(t0)), "t_0", small, Anchor::Left);
+  c.text(P2(axisX, Y(t1)), "t_1", small, Anchor::Left);
+  if (mode == SpaceTime::Extrusion)  // a tick at each pose drawn above, in its colour
+    for (int k = 1; k < 8; ++k)
+      c.line(P2(axisX + 0.08, Y(t0 + (t1 - t0) * k / 8)), P2(axisX + 0.25, Y(t0 + (t1 - t0) * k / 8)),
+             Stroke{timeColour(t0 + (t1 - t0) * k / 8), 1.5});
+  // The bands: each body's x-extent at every t (faint where the test does not look).
+  const double bandAlpha = mode == SpaceTime::Extrusion ? 0.55 : 0.18;
+  for (const Body* b : {&pair.P, &pair.Q}) {
+    const bool isP = b == &pair.P;
+    std::vector<P2> band;
+    for (int k = 0; k <= samples; ++k) band.push_back(P2(xExtent(*b, t0 + (t1 - t0) * k / samples).first, Y(t0 + (t1 - t0) * k / samples)));
+    for (int k = samples; k >= 0; --k) band.push_back(P2(xExtent(*b, t0 + (t1 - t0) * k / samples).second, Y(t0 + (t1 - t0) * k / samples)));
+    const Color stroke = isP ? palette::bodyPStroke : palette::bodyQStroke;
+    c.polygon(band, ShapeStyle{(isP ? palette::bodyPFill : palette::bodyQFill).withAlpha(bandAlpha),
+                               Stroke{stroke.withAlpha(mode == SpaceTime::Extrusion ? 1.0 : 0.35), 1.0}});
+  }
+  // Where the bands meet: the collision in space-time.
+  std::vector<P2> lows, highs;
+  for (int k = 0; k <= 4 * samples; ++k) {
+    const double t = t0 + (t1 - t0) * k / (4 * samples);
+    const auto [p0, p1] = xExtent(pair.P, t);
+    const auto [q0, q1] = xExtent(pair.Q, t);
+    if (std::max(p0, q0) > std::min(p1, q1)) continue;
+    lows.push_back(P2(std::max(p0, q0), Y(t)));
+    highs.push_back(P2(std::min(p1, q1), Y(t)));
+  }
+  if (mode == SpaceTime::Static) {  // two samples: the bodies' extents at t_0 and t_1 only
+    for (double t : {t0, t1}) {
+      c.line(P2(axisX, Y(t)), P2(right, Y(t)), Stroke{palette::ink, 1.0, style::dashed});
+      for (const Body* b : {&pair.P, &pair.Q}) {
+        const auto [lo, hi] = xExtent(*b, t);
+        c.line(P2(lo, Y(t)), P2(hi, Y(t)), Stroke{b == &pair.P ? palette::bodyPStroke : palette::bodyQStroke, 5});
+      }
+    }
+    c.text(P2(right, Y(t1)), "two samples, both apart: the meeting is between", note, Anchor::AboveLeft);
+    return;
+  }
+  if (mode == SpaceTime::Sweeping) {  // each body's x over the whole interval, whenever it is there
+    for (const Body* b : {&pair.P, &pair.Q}) {
+      const auto [a0, a1] = xExtent(*b, t0);
+      const auto [b0, b1] = xExtent(*b, t1);
+      const double lo = std::min(a0, b0), hi = std::max(a1, b1);
+      const bool isP = b == &pair.P;
+      c.polygon({P2(lo, Y(t0)), P2(hi, Y(t0)), P2(hi, Y(t1)), P2(lo, Y(t1))},
+                ShapeStyle{(isP ? palette::bodyPFill : palette::bodyQFill).withAlpha(0.35),
+                           Stroke{isP ? palette::bodyPStroke : palette::bodyQStroke, 1.0, style::dashed}});
+    }
+    c.text(P2(right, Y(t1)), "each body's x over all of [t_0, t_1]: when is lost", note, Anchor::AboveLeft);
+    return;
+  }
+  if (!lows.empty()) {  // the extrusion: the bands themselves, and where they meet
+    std::vector<P2> meet = lows;
+    meet.insert(meet.end(), highs.rbegin(), highs.rend());
+    c.polygon(meet, ShapeStyle{palette::highlight.withAlpha(0.9), Stroke{palette::ink, 1.0}});
+  }
+  // The interval the test is asked about, as a bracket along t, and the time of impact.
+  const double bx = right - 0.15;
+  c.line(P2(bx, Y(t0)), P2(bx, Y(t1)), Stroke{palette::ink, 1.5});
+  for (double t : {t0, t1}) c.line(P2(bx - 0.12, Y(t)), P2(bx, Y(t)), Stroke{palette::ink, 1.5});
+  c.text(P2(bx, Y(t0 + 0.85 * (t1 - t0))), "[t_0, t_1]", small, Anchor::Left, P2(-4, 0));
+  c.text(P2(right, Y(t1)), "the bodies swept through time meet", note, Anchor::AboveLeft);
+  if (toi && toi->status == ToiStatus::Hit) {
+    c.line(P2(axisX, Y(toi->time)), P2(bx, Y(toi->time)), Stroke{palette::penetration, 1.2, style::dashed});
+    c.text(P2(bx, Y(toi->time)), "TOI", TextStyle{Font::Sans, 12, palette::penetration, 2.0, palette::background},
+           Anchor::BelowLeft, P2(-6, 0));
+  }
+}
+
 // Panel (col, row) of a grid of w x h cells, less a band of `band` pixels below it for the verdicts.
 void panel(Canvas& c, int col, int row, int w, int h, int band, const std::string& title) {
   c.setPanel({col * w, row * h, w, h - band});
+  c.title(title);
+}
+// The same for a panel whose top left corner is at pixel (x, y).
+void panelAt(Canvas& c, int x, int y, int w, int h, int band, const std::string& title) {
+  c.setPanel({x, y, w, h - band});
   c.title(title);
 }
 
@@ -356,20 +459,25 @@ std::string solverVerdict(const ExtrusionResult<double>& test, const ToiResult<d
 // middle). "Extrusion intersection tests take a four-dimensional approach to detect
 // spacio-temporal intersection directly, without misses or false alarms" (right column).
 void figure1(const std::string& out, const Pair& passThrough, const Pair& crossing) {
-  const int W = 430, H = 350;
-  Canvas c(3 * W, 2 * H);
+  // Row A is taller: under its bodies, an inset of x against t (drawSpaceTime).
+  const int W = 430, heights[] = {470, 350}, tops[] = {0, heights[0]};
+  const double insetBottom = passThrough.ymin + 0.3, insetTop = insetBottom + 2.2;
+  Canvas c(3 * W, heights[0] + heights[1]);
   std::string summary = "Fig. 1:";
   const std::pair<const Pair*, std::string> rows[] = {{&passThrough, "(A) pass-through"}, {&crossing, "(B) crossing paths"}};
   for (int row = 0; row < 2; ++row) {
     const Pair& pair = *rows[row].first;
+    const int H = heights[row], top = tops[row];
+    const bool inset = row == 0;
     const bool truth = collides(pair);
     // Static: the bodies at t_0 and t_1 only.
-    panel(c, 0, row, W, H, 30, rows[row].second + ": static test at t_0 and t_1");
+    panelAt(c, 0, top, W, H, 30, rows[row].second + ": static test at t_0 and t_1");
     drawPair(c, pair, 1);
+    if (inset) drawSpaceTime(c, pair, SpaceTime::Static, insetBottom, insetTop, nullptr);
     const bool atEnds = staticTest(pair.P, pair.Q, t0, t1, 2);
     verdict(c, "static: " + said(atEnds) + judged(atEnds, truth), atEnds == truth, 30);
     // Sweeping: the swept hulls conv(X(t_0) \cup X(t_1)).
-    panel(c, 1, row, W, H, 30, rows[row].second + ": sweeping test");
+    panelAt(c, W, top, W, H, 30, rows[row].second + ": sweeping test");
     c.setWorldWindow(pair.xmin, pair.xmax, pair.ymin, pair.ymax);
     c.setClip(c.plotArea());
     for (const Body* b : {&pair.P, &pair.Q}) {
@@ -382,13 +490,15 @@ void figure1(const std::string& out, const Pair& passThrough, const Pair& crossi
                            Stroke{isP ? palette::bodyPStroke : palette::bodyQStroke, 1.0, style::dashed}});
     }
     drawPair(c, pair, 1);
+    if (inset) drawSpaceTime(c, pair, SpaceTime::Sweeping, insetBottom, insetTop, nullptr);
     const bool swept = sweepingTest(pair.P, pair.Q, t0, t1).status != IntersectionStatus::Disjoint;
     verdict(c, "sweeping: " + said(swept) + judged(swept, truth), swept == truth, 30);
     // Extrusion: the §3 test, then the §5 solver when it is undecided.
-    panel(c, 2, row, W, H, 30, rows[row].second + ": extrusion test");
-    drawPair(c, pair, 8);
+    panelAt(c, 2 * W, top, W, H, 30, rows[row].second + ": extrusion test");
+    drawPair(c, pair, 8, !inset);  // with the inset, its t axis is the key of the poses' colours
     const auto test = extrusionTest(pair.P, pair.Q, t0, t1);
     const auto toi = timeOfImpact(pair.P, pair.Q, t0, t1);
+    if (inset) drawSpaceTime(c, pair, SpaceTime::Extrusion, insetBottom, insetTop, &toi);
     drawFound(c, pair, test, toi);
     const bool extruded = reportsCollision(toi.status);
     verdict(c, solverVerdict(test, toi) + judged(extruded, truth), extruded == truth, 30);
@@ -552,10 +662,11 @@ int main(int argc, char** argv) {
   // Fig. 1 (A): a small fast square passes straight through a thin fixed plate.
   const Pair passThrough{body(box(0.5, 0.5), glide(V(-3, 0.2, 0), V(6, -0.4, 0))),
                          body(box(0.2, 3.2), Motion<double>::fixed(Pose<double>::identity())),
-                         V(0, 1, 0), V(0, 1, 0), -4, 4, -2.6, 2.4};
+                         V(0, 1, 0), V(0, 1, 0), -4, 4, -5.2, 2.4};
   // Fig. 1 (B): paths that cross, the crossing passed at different times.
   const Pair crossing{body(box(0.6, 0.6), glide(V(-3.5, 0, 0), V(6, 0, 0))),
-                      body(box(0.6, 0.6), glide(V(0.8, -1.2, 0), V(3, 3, 0))), V(0, -1, 0), V(-1, 1, 0), -4.2, 4.6, -2.4, 2.4};
+                      body(box(0.6, 0.6), glide(V(0.8, -1.2, 0), V(3, 3, 0))), V(0, -1, 0), V(-1, 1, 0), -4.2, 4.6, -2.4, 2.4,
+                      true};
   figure1(out, passThrough, crossing);
 
   // Fig. 4: (a) a stack of two blocks in free fall, (b) head on, (c) near miss, (d) overtaking.
