@@ -18,6 +18,7 @@
 #include <gjkx/supporting_distance/supporting_distance.hpp>
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <string>
 
@@ -56,7 +57,10 @@ void drawBodies(Canvas& canvas, const Body& P, const Body& Q) {
 
 // The supporting lines of P and Q normal to s, through S_P(s) and S_Q(-s), and the
 // signed gap between them measured along s from S_P(s): green when positive, red when not.
-void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const V& s, const std::string& name) {
+// `qLabel`, when given, is the side of S_Q(-s) its name goes to (where the default side
+// would put it over Q's outline).
+void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const V& s, const std::string& name,
+                            std::optional<Anchor> qLabel = std::nullopt) {
   const V unit = s.normalized();
   const V sp = P.support(unit), sq = Q.support(-unit);
   const double sd = supportingDistance(P, Q, unit);
@@ -88,7 +92,8 @@ void drawSupportingDistance(Canvas& canvas, const Body& P, const Body& Q, const 
   // The support points' names on the side away from the gap's arrow, over a halo.
   const TextStyle label{Font::Math, style::labelSize, palette::ink, 3.0, palette::background};
   canvas.text(xy(sp), "S_P(" + name + ")", label, chapter::toward(-xy(unit) - 1.5 * xy(along)));
-  canvas.text(xy(sq), "S_Q(-" + name + ")", label, chapter::toward(xy(unit) - 1.5 * xy(along)));
+  canvas.text(xy(sq), "S_Q(-" + name + ")", label, qLabel.value_or(chapter::toward(xy(unit) - 1.5 * xy(along))),
+              qLabel ? Eigen::Vector2d(10, -30) : Eigen::Vector2d::Zero());
 }
 
 // SD over the angle of s in [0, 2 pi), scaled so the plot fills the panel.
@@ -183,7 +188,7 @@ int main(int argc, char** argv) {
   canvas.setWorldWindow(-2, 11, -3, 6);
   canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
   drawBodies(canvas, P, Qapart);
-  drawSupportingDistance(canvas, P, Qapart, bestApart.direction, "s");
+  drawSupportingDistance(canvas, P, Qapart, bestApart.direction, "s", Anchor::BelowLeft);  // below the gap, clear of Q
   canvas.line(xy(distance.witnessP), xy(distance.witnessQ), Stroke{palette::ink, 1.0, style::dotted});
 
   panel(1, 1, "(e) intersecting: max SD = -depth = " + fixed(bestInside.value));

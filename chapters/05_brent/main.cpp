@@ -192,12 +192,16 @@ void legend(Canvas& canvas, double x, double y, const std::vector<std::pair<Colo
     y += 17;
   }
 }
-void kindLegend(Canvas& canvas, double x, double y) {
-  legend(canvas, x, y,
-         {{kindColor(BrentStepKind::Bisection), "bisection"}, {kindColor(BrentStepKind::Secant), "secant"},
-          {kindColor(BrentStepKind::InverseQuadratic), "inverse quadratic"},
-          {kindColor(BrentStepKind::MinimalStep), "minimal step (tolerance)"}},
-         true);
+// The step kinds' colours; the solver's leap (not one of Brent's rules) only where `run` took one.
+void kindLegend(Canvas& canvas, double x, double y, const Run* run = nullptr) {
+  std::vector<std::pair<Color, std::string>> items{
+      {kindColor(BrentStepKind::Bisection), "bisection"}, {kindColor(BrentStepKind::Secant), "secant"},
+      {kindColor(BrentStepKind::InverseQuadratic), "inverse quadratic"},
+      {kindColor(BrentStepKind::MinimalStep), "minimal step (tolerance)"}};
+  if (run && std::any_of(run->trace.steps.begin(), run->trace.steps.end(),
+                         [](const ToiStep<double>& step) { return step.kind == BrentStepKind::Leap; }))
+    items.push_back({kindColor(BrentStepKind::Leap), "leap (the solver's own)"});
+  legend(canvas, x, y, items, true);
 }
 void lineLegend(Canvas& canvas, double x, double y) {
   legend(canvas, x, y,
@@ -324,7 +328,7 @@ int main(int argc, char** argv) {
     canvas.setPanel({0, 0, 880, 410});
     canvas.title("(a) max SD(P(t), Q(t), s) and §5's approximations: a hit at TOI = " + format("%.4f", toi));
     solverPlot(canvas, P1, Q1, hit, 0, 1, -1.5, 3.0, 0.1, 0.5);
-    kindLegend(canvas, 680, 60);
+    kindLegend(canvas, 680, 60, &hit);
     lineLegend(canvas, 100, 300);
 
     canvas.setPanel({880, 0, 440, 410});
@@ -404,7 +408,7 @@ int main(int argc, char** argv) {
       if (k > 0) canvas.text(plot.at(chain[k], 3), name(k), TextStyle{Font::Math, 15, stroke.color, 2}, Anchor::Above);
     }
     canvas.text(plot.at(0.5, -1.5 - 62 * pixel), "the chain: the extrusion test succeeds on each interval", kSmall);
-    kindLegend(canvas, 680, 60);
+    kindLegend(canvas, 680, 60, &finish);
 
     canvas.setPanel({880, 0, 440, 460});
     canvas.title("(b) Q at the chain's times, each link's separating line");
