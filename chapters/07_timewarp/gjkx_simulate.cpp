@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   }
   frames << "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,"
             "max_penetration,events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,"
-            "tunnelled,integration_s,bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries\n";
+            "tunnelled,integration_s,bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught\n";
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
   long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
              << c.events << ',' << c.microcollisions << ',' << c.bodiesRolledBack << ',' << c.brentMax << ','
              << c.completeTests << ',' << c.solverCaps << ',' << (noChecks ? -1 : c.tunnelled) << ','
              << p.integration << ',' << p.bounds << ',' << p.collisionDetection << ',' << p.impulses << ','
-             << p.ordering << ',' << p.checks << ',' << c.brentQueries << '\n';
+             << p.ordering << ',' << p.checks << ',' << c.brentQueries << ',' << c.caught << '\n';
       for (std::size_t b = 0; b < world->bodies().size(); ++b) {
         const gjkx::BodyState s = world->stateOf(int(b));
         const Eigen::Vector3d x = world->positionOf(int(b));

@@ -60,6 +60,7 @@ struct FrameCounters {
   long collisionChecks = 0;     ///< pair queries of the time-of-impact solver (or static tests)
   long collisions = 0;          ///< impulses applied (microcollisions included)
   long microcollisions = 0;     ///< of which microcollisions
+  long caught = 0;              ///< microcollisions that stopped a caught body (one struck more than 32 times in the frame: Zeno's wedge; World::resolve)
   long rollbacks = 0;           ///< collisions that rolled back bodies whose local time had run past t_c
   long bodiesRolledBack = 0;    ///< bodies rolled back (or, for the heap, advanced to the impact)
   long brentQueries = 0;        ///< queries whose first extrusion test failed, so that Brent ran (§5)
