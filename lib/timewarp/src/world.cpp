@@ -50,6 +50,8 @@ struct World::FrameState {
   std::vector<Bounds> boxes;                         // Timewarp: each body's swept bounds to the frame's end
   std::vector<int> collisionsOf;                     // per body, its microcollisions this frame (see resolve)
   std::vector<std::vector<Eigen::Vector3d>> sidesOf;  // per body, the outward normals it was struck along (up to 8 apart)
+  std::vector<double> lastCollisionOf;               // per body, the time of its last collision this frame
+  std::vector<int> sameInstantOf;                    // per body, its collisions at that very time
 };
 
 namespace {
@@ -621,28 +623,39 @@ void World::resolve(const Hit& hit, FrameState& frame) {
   // is *caught*: it is stopped where it stands (its velocity and spin set to zero, which
   // only takes energy away), and gravity starts it again, so it settles in a few drops
   // of one tolerance per frame.
-  constexpr int caughtAfter = 32;
+  //
+  // The same at one instant: a light rod lying on two corners, each impulse at one corner
+  // setting the other closing (2,600 collisions at one time for a cartilage on the floor).
+  // A body in more than `sameInstantAfter` collisions at the very same time is caught too.
+  constexpr int caughtAfter = 32, sameInstantAfter = 8;
   if (frame.collisionsOf.size() != bodies_.size()) {
     frame.collisionsOf.assign(bodies_.size(), 0);
     frame.sidesOf.assign(bodies_.size(), {});
+    frame.lastCollisionOf.assign(bodies_.size(), -1.0);
+    frame.sameInstantOf.assign(bodies_.size(), 0);
   }
-  if (result.status == ImpulseStatus::Microcollision)
-    for (const auto& [b, state, outward] : {std::tuple<int, BodyState*, Eigen::Vector3d>{hit.i, &si, hit.normal},
-                                            std::tuple<int, BodyState*, Eigen::Vector3d>{hit.j, &sj, -hit.normal}}) {
-      if (bodies_[b].rigid.isStatic()) continue;
+  for (const auto& [b, state, outward] : {std::tuple<int, BodyState*, Eigen::Vector3d>{hit.i, &si, hit.normal},
+                                          std::tuple<int, BodyState*, Eigen::Vector3d>{hit.j, &sj, -hit.normal}}) {
+    if (bodies_[b].rigid.isStatic()) continue;
+    frame.sameInstantOf[b] = frame.lastCollisionOf[b] == hit.time ? frame.sameInstantOf[b] + 1 : 1;
+    frame.lastCollisionOf[b] = hit.time;
+    bool wedged = false;
+    if (result.status == ImpulseStatus::Microcollision) {
       auto& sides = frame.sidesOf[b];
-      bool wedged = false, seen = false;
+      bool seen = false;
       for (const auto& side : sides) {
         wedged = wedged || side.dot(outward) < 0;
         seen = seen || side.dot(outward) > 0.9;
       }
       if (!seen && sides.size() < 8) sides.push_back(outward);
-      if (++frame.collisionsOf[b] > caughtAfter && wedged) {
-        state->velocity.setZero();
-        state->angularVelocity.setZero();
-        ++c.caught;
-      }
+      wedged = ++frame.collisionsOf[b] > caughtAfter && wedged;
     }
+    if (wedged || frame.sameInstantOf[b] > sameInstantAfter) {  // caught: stopped where it stands
+      state->velocity.setZero();
+      state->angularVelocity.setZero();
+      ++c.caught;
+    }
+  }
   frame.collidedPairs.emplace_back(hit.i, hit.j);
   collisionLog_.push_back({hit.time, double(hit.i), double(hit.j)});
   if (settings_.trace) trace_.push_back({TraceEvent::Kind::Collision, hit.i, hit.j, hit.time, hit.time});
