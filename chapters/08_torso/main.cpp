@@ -123,13 +123,15 @@ Mesh placed(const gjkx::TriangleMesh& m, const V3& position, const Eigen::Quater
 }
 
 /// The box holding the plant, the floor's middle and the bones at every one of `frames`:
-/// one framing for all panels, so that they share a scale.
+/// one framing for all panels, so that they share a scale. A bone that slid off the
+/// floor and fell (below its top) is left out of the framing: it falls for ever.
 std::pair<V3, V3> bounds(const torso::SceneLayout& layout, const std::vector<Frame>& frames) {
   V3 lo(-0.35, -0.35, 0), hi(0.35, 0.35, layout.drop.plantTop);
   for (const Frame& f : frames)
     for (std::size_t b = 0; b < layout.bones.size(); ++b)
       for (const V3& v : layout.bones[b].mesh.vertices) {
         const V3 p = f.orientation[b] * v + f.position[b];
+        if (p.z() < -0.05) continue;
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
       }
