@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
                        number(layout.duration) +
                        ",\n  \"collision_tolerance\": 0.000345267,\n  \"restitution\": 0.7,\n  \"friction\": 0.4,\n"
                        "  \"scalar\": \"float\",\n  \"ordering\": \"timewarp\",\n  \"bodies\": [\n"
-                       "    { \"name\": \"floor\", \"shape\": {\"box\": [1.5, 1.5, 0.1]}, \"position\": [0, 0, -0.1], "
+                       "    { \"name\": \"floor\", \"shape\": {\"box\": [" + number(torso::floorHalfWidth) + ", " +
+                       number(torso::floorHalfWidth) + ", 0.1]}, \"position\": [0, 0, -0.1], "
                        "\"static\": true },\n"
                        "    { \"name\": \"plant\", \"shape\": {\"mesh\": \"plant.off\"}, \"position\": [0, 0, 0], "
                        "\"static\": true }";

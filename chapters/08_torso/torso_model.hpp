@@ -29,6 +29,9 @@
 
 namespace torso {
 
+/// Half the width of the static floor the plant stands on (m): the scene's floor box and Fig. 5's floor.
+inline constexpr double floorHalfWidth = 1.5;
+
 /// One bone: its name, its group ("vertebra", "rib", ...), and its mesh in the torso's
 /// frame (metres).
 struct Bone {
