@@ -17,7 +17,10 @@
 //   over a method that left queries unanswered. Boolean queries (a yes/no answer has no
 //   error): one row per method, the median time per query with a whisker to the 99th
 //   percentile, the wrong answers and unanswered queries counted beside it.
-// --replot measures nothing and redraws the plots from the CSV files already in DIR.
+// - gjk-distance-summary.md, gjk-boolean-summary.md, gjk-float-summary.md: the key figures
+//   the docs page quotes (ratios to the fastest peer, largest errors, wrong answers).
+// --replot measures nothing, redraws the plots from the CSV files already in DIR and
+// writes the key figures again from them.
 // A full run takes about 25 s of processor time (51 s of wall time on the shared 2-core
 // machine at half a core), --quick a few seconds. Regenerate the kept figures with
 // `build/chapters/09_study/gjk_study --out figures/study`.
@@ -56,7 +59,7 @@ Options parse(int argc, char** argv) {
   app.add_option("--out", o.out, "the folder for the plots and markdown tables")->type_name("DIR")->capture_default_str();
   app.add_flag("--quick", o.study.quick, "a short run: fewer pairs and repetitions");
   app.add_option("--seed", o.study.seed, "seed of the shapes and poses")->type_name("N")->capture_default_str();
-  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots from the gjk-<group>.csv files already in DIR");
+  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots and write the key figures from the gjk-<group>.csv files already in DIR");
   chapter::parseOrExit(app, argc, argv);
   return o;
 }
@@ -525,6 +528,168 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
   }
 }
 
+
+// ---------------------------------------------------------------------------------------
+// Key figures: the numbers the docs page quotes, computed from the rows (measured or read
+// back from the CSV files by --replot), so the page's text follows every rerun.
+
+// The shapes in the order of the rows.
+std::vector<std::string> shapesOf(const std::vector<GjkRow>& rows) {
+  std::vector<std::string> shapes;
+  for (const auto& r : rows) {
+    const std::string s = split(r.workload).shape;
+    if (std::find(shapes.begin(), shapes.end(), s) == shapes.end()) shapes.push_back(s);
+  }
+  return shapes;
+}
+
+// The row of a method on a workload, or nullptr.
+const GjkRow* rowOf(const std::vector<GjkRow>& rows, const std::string& workload, const std::string& method) {
+  for (const auto& r : rows)
+    if (r.workload == workload && r.method == method) return &r;
+  return nullptr;
+}
+
+// The fastest peer's row on a workload, or nullptr.
+const GjkRow* bestPeerRow(const std::vector<GjkRow>& rows, const std::string& workload) {
+  const GjkRow* best = nullptr;
+  for (const auto& r : rows)
+    if (r.workload == workload && !r.ours && (!best || r.medianNs < best->medianNs)) best = &r;
+  return best;
+}
+
+std::string workloadName(bool boolean, const std::string& shape, bool warm) {
+  return std::string("gjk_") + (boolean ? "boolean_" : "distance_") + shape + (warm ? "_warm" : "");
+}
+
+// One table, a row per shape: ours-double's median time, the fastest peer's, and their
+// ratio, cold and warm.
+void writeSpeedTable(std::ostream& md, const std::vector<GjkRow>& rows, bool boolean) {
+  md << "| shape | cold: ours-double ns | cold: fastest peer ns | cold: ours / peer | warm: ours-double ns | warm: fastest peer ns | warm: ours / peer |\n";
+  md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const auto& shape : shapesOf(rows)) {
+    md << "| " << shape;
+    for (bool warm : {false, true}) {
+      const std::string w = workloadName(boolean, shape, warm);
+      const GjkRow* ours = rowOf(rows, w, "ours-double");
+      const GjkRow* peer = bestPeerRow(rows, w);
+      md << " | " << (ours ? format("%.0f", ours->medianNs) : "-") << " | "
+         << (peer ? format("%.0f", peer->medianNs) + " (" + peer->method + ")" : "-") << " | "
+         << (ours && peer ? format("%.2f", ours->medianNs / peer->medianNs) : "-");
+    }
+    md << " |\n";
+  }
+}
+
+// "lo to hi" of a set of values, formatted with f.
+std::string rangeText(const char* f, std::vector<double> v) {
+  if (v.empty()) return "-";
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *lo == *hi ? format(f, *lo) : format(f, *lo) + " to " + format(f, *hi);
+}
+
+bool isCurved(const std::string& shape) { return shape == "sphere" || shape == "capsule"; }
+
+// gjk-distance-summary.md: the distance queries' key figures.
+void writeDistanceSummary(const std::string& path, const std::vector<GjkRow>& rows) {
+  std::ofstream md(path);
+  mdTitle(md, true, "GJK distance queries: key figures");
+  writeSpeedTable(md, rows, false);
+  // Ratios and ours' largest error, boxes and polytopes apart from spheres and capsules.
+  std::vector<double> cold[2], warm[2], errorMax[2];
+  for (const auto& r : rows) {
+    const WorkloadName n = split(r.workload);
+    if (n.boolean || r.method != "ours-double") continue;
+    const GjkRow* peer = bestPeerRow(rows, r.workload);
+    const int curved = isCurved(n.shape);
+    if (peer) (n.warm ? warm : cold)[curved].push_back(r.medianNs / peer->medianNs);
+    errorMax[curved].push_back(r.errorMax);
+  }
+  md << "\n<br>Ours in double against the fastest peer: on boxes and polytopes " << rangeText("%.2f", cold[0]) << " of its time cold and "
+     << rangeText("%.2f", warm[0]) << " warm, with a largest error of " << rangeText("%.1e", {*std::max_element(errorMax[0].begin(), errorMax[0].end())})
+     << "; on spheres and capsules " << rangeText("%.2f", cold[1]) << " cold and " << rangeText("%.2f", warm[1])
+     << " warm, with a largest error of " << rangeText("%.1e", {*std::max_element(errorMax[1].begin(), errorMax[1].end())}) << ".\n\n";
+  // Per method: its times and errors over all distance workloads, and where its largest error was.
+  md << "| method | median ns, over the workloads | median error, over the workloads | largest error | where |\n";
+  md << "| --- | ---: | ---: | ---: | --- |\n";
+  std::vector<std::string> methods;
+  for (const auto& r : rows)
+    if (!split(r.workload).boolean && std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+  for (const auto& m : methods) {
+    std::vector<double> ns, medians;
+    const GjkRow* worst = nullptr;
+    for (const auto& r : rows) {
+      if (r.method != m || split(r.workload).boolean) continue;
+      ns.push_back(r.medianNs);
+      medians.push_back(r.errorMedian);
+      if (!worst || r.errorMax > worst->errorMax) worst = &r;
+    }
+    const WorkloadName n = split(worst->workload);
+    md << "| " << m << " | " << rangeText("%.0f", ns) << " | " << rangeText("%.1e", medians) << " | " << format("%.1e", worst->errorMax)
+       << " | " << n.shape << (n.warm ? ", warm" : ", cold") << " |\n";
+  }
+  mdNotes(md, "Computed by `gjk_study` (also with `--replot`) from the `gjk-distance-*.csv` files of the run in the GJK table. "
+              "*ours / peer*: ours-double's median time divided by the fastest peer's (below 1: faster). Errors: `|d - d_ref|`.");
+}
+
+// gjk-boolean-summary.md: the boolean queries' key figures.
+void writeBooleanSummary(const std::string& path, const std::vector<GjkRow>& rows) {
+  std::ofstream md(path);
+  mdTitle(md, true, "GJK boolean queries: key figures");
+  writeSpeedTable(md, rows, true);
+  int oursWrong = 0, oursFailed = 0, oursJudged = 0, peersWrong = 0;
+  std::string peerCases;
+  for (const auto& r : rows) {
+    const WorkloadName n = split(r.workload);
+    if (!n.boolean) continue;
+    if (r.ours) {
+      oursWrong += r.wrong;
+      oursFailed += r.failures;
+      oursJudged += r.judged;
+    } else if (r.wrong + r.failures > 0) {
+      peersWrong += r.wrong;
+      peerCases += (peerCases.empty() ? "" : "; ") + r.method + " on " + n.shape + (n.warm ? " warm" : " cold") + ": " +
+                   std::to_string(r.wrong) + " wrong of " + std::to_string(r.judged) + " judged" +
+                   (r.failures ? ", " + std::to_string(r.failures) + " unanswered" : "");
+    }
+  }
+  md << "\n<br>Ours, every scalar and workload: " << oursWrong << " wrong answers of " << oursJudged << " judged queries, " << oursFailed
+     << " unanswered. The peers: " << peersWrong << (peersWrong == 1 ? " wrong answer" : " wrong answers") << (peerCases.empty() ? "" : " (" + peerCases + ")") << ".\n";
+  mdNotes(md, "Computed by `gjk_study` (also with `--replot`) from the `gjk-boolean-*.csv` files of the run in the GJK table. "
+              "*ours / peer*: ours-double's median time divided by the fastest peer's (below 1: faster).");
+}
+
+// gjk-float-summary.md: ours in float against ours in double, in one sentence.
+void writeFloatSummary(const std::string& path, const std::vector<GjkRow>& rows) {
+  std::vector<double> medians, maxima, timeRatio;
+  int wrongFloat = 0, wrongDouble = 0, failedFloat = 0;
+  for (const auto& p : scalarPairs(rows)) {
+    if (!p.d || !p.f) continue;
+    timeRatio.push_back(p.f->medianNs / p.d->medianNs);
+    if (split(p.workload).boolean) {
+      wrongFloat += p.f->wrong;
+      wrongDouble += p.d->wrong;
+    } else {
+      medians.push_back(p.f->errorMedian);
+      maxima.push_back(p.f->errorMax);
+    }
+    failedFloat += p.f->failures;
+  }
+  std::ofstream md(path);
+  md << "GJK in float, over every distance workload: median errors " << rangeText("%.1e", medians) << ", largest error "
+     << rangeText("%.1e", {maxima.empty() ? 0.0 : *std::max_element(maxima.begin(), maxima.end())}) << "; boolean answers: " << wrongFloat
+     << " wrong in float, " << wrongDouble << " in double; " << failedFloat
+     << " queries ended without an answer in float; its median time is " << rangeText("%.2f", timeRatio)
+     << " times that of double (computed by `gjk_study` from the `gjk-*.csv` files).\n";
+}
+
+void writeSummaries(const std::string& folder, const std::vector<GjkRow>& rows) {
+  writeDistanceSummary(folder + "/gjk-distance-summary.md", rows);
+  writeBooleanSummary(folder + "/gjk-boolean-summary.md", rows);
+  writeFloatSummary(folder + "/gjk-float-summary.md", rows);
+  std::printf("wrote %s/gjk-distance-summary.md, gjk-boolean-summary.md and gjk-float-summary.md\n", folder.c_str());
+}
+
 }  // namespace
 
 // The rows of one group back from its gjk-<group>.csv (for --replot: the plots redrawn
@@ -560,6 +725,7 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   if (o.replot) {
     const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
+    std::vector<GjkRow> all;  // every group's rows, for the key figures
     for (const Group& g : kGroups) {
       std::vector<GjkRow> rows;
       if (!readGroupCsv(o.out, g, rows)) {
@@ -567,7 +733,9 @@ int main(int argc, char** argv) {
         return 1;
       }
       plotGroup(o.out, g, rows, haveGnuplot);
+      all.insert(all.end(), rows.begin(), rows.end());
     }
+    writeSummaries(o.out, all);
     return 0;
   }
   std::printf("GJK comparison (%s run, seed %u); %s\n", o.study.quick ? "quick" : "full", o.study.seed, peers::presentText(peers::kGjkPeers).c_str());
@@ -590,6 +758,7 @@ int main(int argc, char** argv) {
   writeMainTable(o.out + "/gjk-table.md", o, rows);
   writeFloatVsDouble(o.out + "/gjk-float-vs-double.md", o, rows);
   std::printf("\nwrote %s/gjk-table.md and %s/gjk-float-vs-double.md\n", o.out.c_str(), o.out.c_str());
+  writeSummaries(o.out, rows);
   const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
   if (!haveGnuplot) std::printf("gnuplot not found: wrote the .csv and .gp files, skipped the plots\n");
   for (const Group& g : kGroups) plotGroup(o.out, g, rows, haveGnuplot);
