@@ -14,13 +14,16 @@
 // under it, on the same time axis, the share of the reference's hits each setting missed).
 // --replot measures nothing and redraws the plots from the CSV files already in DIR. The tables are also written
 // into DIR as markdown, for the docs page of the study: toi-workloads.md, toi-table.md,
-// toi-float-vs-double.md and toi-ccd.md.
+// toi-float-vs-double.md and toi-ccd.md; and the key figures the page quotes (misses and
+// false alarms per method, ours against the peers' time) in toi-summary.md, which --replot
+// writes again from the CSV files.
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
 // 2-core machine (references about 30 s of it), --quick about 20 s. Regenerate the kept
 // study figures with `build/chapters/09_study/toi_study --out figures/study`.
 #include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -50,7 +53,7 @@ Options parse(int argc, char** argv) {
   app.add_option("--ccd-data", o.study.ccdData, "the CCD benchmark's sample queries (default: the build's ../shared/data/ccd-queries)")
       ->type_name("DIR");
   app.add_option("--seed", o.study.seed, "seed of the workloads")->type_name("N")->capture_default_str();
-  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots from the toi-<workload>.csv files already in DIR");
+  app.add_flag("--replot", o.replot, "measure nothing: redraw the plots and write the key figures from the toi-<workload>.csv files already in DIR");
   chapter::parseOrExit(app, argc, argv);
   return o;
 }
@@ -405,6 +408,122 @@ void writeCcd(const std::string& path, const Options& o, const ToiStudyResults& 
   mdNotes(md, notes);
 }
 
+
+// ---------------------------------------------------------------------------------------
+// Key figures: the numbers the docs page quotes, computed from the rows (measured or read
+// back from the CSV files by --replot), so the page's text follows every rerun. Workloads
+// in the order of their names, the same whichever way the rows came.
+
+bool isTheSolver(const ToiRow& r) { return r.family == "ours" || r.family == "certified"; }
+
+std::vector<std::string> workloadsOf(const std::vector<ToiRow>& rows) {
+  std::set<std::string> names;
+  for (const auto& r : rows) names.insert(r.workload);
+  return {names.begin(), names.end()};
+}
+
+// The row of ours in double at the tolerance the RATIO lines use, and FCL's conservative advancement.
+const ToiRow* findRow(const std::vector<ToiRow>& rows, const std::string& workload, const std::string& family, const std::string& setting,
+                      const std::string& scalar) {
+  for (const auto& r : rows)
+    if (r.workload == workload && r.family == family && (setting.empty() || r.setting == setting) && r.scalar == scalar) return &r;
+  return nullptr;
+}
+
+// "lo (workload) to hi (workload)" of a value per workload.
+std::string rangeText(const char* f, const std::map<std::string, double>& v) {
+  if (v.empty()) return "-";
+  auto lo = v.begin(), hi = v.begin();
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    if (it->second < lo->second) lo = it;
+    if (it->second > hi->second) hi = it;
+  }
+  return fmt(f, lo->second) + " (" + lo->first + ") to " + fmt(f, hi->second) + " (" + hi->first + ")";
+}
+
+// toi-summary.md: misses and false alarms of every method, and ours' speed against the peers.
+void writeSummary(const std::string& path, const std::vector<ToiRow>& rows) {
+  const std::vector<std::string> workloads = workloadsOf(rows);
+  std::ofstream md(path);
+  mdTitle(md, true, "Time of impact: key figures", "");
+
+  // Ours: every setting of the paper's variant and the certified one, both scalars.
+  std::set<std::string> settings;
+  int misses = 0, falseAlarms = 0, hits = 0, clear = 0;
+  for (const auto& r : rows)
+    if (isTheSolver(r)) {
+      settings.insert(r.label());
+      misses += r.misses;
+      falseAlarms += r.falseAlarms;
+    }
+  for (const auto& w : workloads)
+    for (const auto& r : rows)
+      if (r.workload == w) {
+        hits += r.refHits;
+        clear += r.clearMisses;
+        break;
+      }
+  md << "The paper's solver and the certified variant, " << settings.size() << " settings (tolerance and scalar) over " << workloads.size()
+     << " workloads with " << hits << " reference hits and " << clear << " clear misses: " << misses << " misses and " << falseAlarms
+     << " false alarms in all.\n\n";
+
+  // Every method that missed a hit or raised a false alarm, with where.
+  md << "| method | misses (workload: missed / reference hits) | false alarms (workload: raised / clear misses) |\n";
+  md << "| --- | --- | --- |\n";
+  std::vector<std::string> labels;
+  for (const auto& r : rows)
+    if (std::find(labels.begin(), labels.end(), r.label()) == labels.end()) labels.push_back(r.label());
+  std::sort(labels.begin(), labels.end());
+  int listed = 0;
+  for (const auto& label : labels) {
+    std::string missText, alarmText;
+    for (const auto& w : workloads)
+      for (const auto& r : rows) {
+        if (r.workload != w || r.label() != label) continue;
+        if (r.misses) missText += (missText.empty() ? "" : ", ") + w + ": " + std::to_string(r.misses) + " / " + std::to_string(r.refHits);
+        if (r.falseAlarms)
+          alarmText += (alarmText.empty() ? "" : ", ") + w + ": " + std::to_string(r.falseAlarms) + " / " + std::to_string(r.clearMisses);
+      }
+    if (missText.empty() && alarmText.empty()) continue;
+    md << "| " << label << " | " << (missText.empty() ? "none" : missText) << " | " << (alarmText.empty() ? "none" : alarmText) << " |\n";
+    ++listed;
+  }
+  if (listed == 0) md << "| (every method) | none | none |\n";
+
+  // Speed: ours in double at 1e-7 against FCL's conservative advancement and the fastest peer.
+  md << "\n<br>**Ours (double, tolerance 1e-7) against the peers**\n\n";
+  md << "| workload | ours us | ours error median | FCL CA us | FCL CA error median | ours / FCL CA | fastest peer us | ours / fastest peer |\n";
+  md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  std::map<std::string, double> vsCa, vsBest, vsBestElsewhere;  // elsewhere: the workloads FCL's CA does not run
+  std::map<std::string, int> fastestCount;
+  for (const auto& w : workloads) {
+    const ToiRow* ours = findRow(rows, w, "ours", "tol=1e-7", "double");
+    if (!ours) continue;
+    const ToiRow* ca = findRow(rows, w, "FCL CA", "", "double");
+    const ToiRow* best = nullptr;
+    for (const auto& r : rows)
+      if (r.workload == w && !r.ours && (!best || r.medianUs < best->medianUs)) best = &r;
+    if (ca) vsCa[w] = ours->medianUs / ca->medianUs;
+    if (best) {
+      (ca ? vsBest : vsBestElsewhere)[w] = ours->medianUs / best->medianUs;
+      ++fastestCount[best->label()];
+    }
+    md << "| " << w << " | " << fmt("%.2f", ours->medianUs) << " | " << fmt("%.1e", ours->errMedian) << " | "
+       << (ca ? fmt("%.2f", ca->medianUs) : "-") << " | " << (ca ? fmt("%.1e", ca->errMedian) : "-") << " | "
+       << (ca ? fmt("%.2f", vsCa[w]) : "-") << " | " << (best ? fmt("%.2f", best->medianUs) + " (" + best->label() + ")" : "-") << " | "
+       << (best ? fmt("%.2f", ours->medianUs / best->medianUs) : "-") << " |\n";
+  }
+  std::string fastest;
+  for (const auto& [label, count] : fastestCount)
+    fastest += (fastest.empty() ? "" : ", ") + label + " on " + std::to_string(count);
+  md << "\n<br>On the workloads FCL's conservative advancement runs on, ours takes " << rangeText("%.2f", vsCa) << " of its median time and "
+     << rangeText("%.2f", vsBest) << " of the fastest peer's";
+  for (const auto& [w, ratio] : vsBestElsewhere) md << "; on " << w << " " << fmt("%.2f", ratio) << " of the fastest peer's";
+  md << " (the fastest peer: " << fastest << " of the " << workloads.size() << " workloads).\n";
+  mdNotes(md, "Computed by `toi_study` (also with `--replot`) from the `toi-<workload>.csv` files of the run in the time-of-impact table. "
+              "Times: median per query (us); errors: `|t - t_ref|` in units of the interval; *ours / ...*: ratio of the median times.");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -413,6 +532,7 @@ int main(int argc, char** argv) {
   const bool haveGnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
   if (!haveGnuplot) std::printf("gnuplot not found: writing the .gp files, skipping the plots\n");
   if (o.replot) {
+    std::vector<ToiRow> all;  // every workload's rows, for the key figures
     for (const auto& entry : std::filesystem::directory_iterator(o.out)) {
       const std::string file = entry.path().filename().string();
       if (file.rfind("toi-", 0) != 0 || entry.path().extension() != ".csv") continue;
@@ -424,7 +544,10 @@ int main(int argc, char** argv) {
         return 1;
       }
       plotWorkload(o.out, workload, queries, rows, false, haveGnuplot);
+      all.insert(all.end(), rows.begin(), rows.end());
     }
+    writeSummary(o.out + "/toi-summary.md", all);
+    std::printf("wrote %s/toi-summary.md\n", o.out.c_str());
     return 0;
   }
   std::printf("toi_study: peers found:");
@@ -475,7 +598,8 @@ int main(int argc, char** argv) {
   writeMainTable(o.out + "/toi-table.md", o, results);
   writeFloatVsDouble(o.out + "/toi-float-vs-double.md", o, results.rows);
   writeCcd(o.out + "/toi-ccd.md", o, results);
-  std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md and toi-ccd.md\n", o.out.c_str());
+  writeSummary(o.out + "/toi-summary.md", results.rows);
+  std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md, toi-ccd.md and toi-summary.md\n", o.out.c_str());
 
   for (const auto& w : results.workloads) plotWorkload(o.out, w.name, int(w.queries.size()), results.rows, true, haveGnuplot);
   return 0;
