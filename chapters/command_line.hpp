@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -25,6 +26,15 @@ inline void parseOrExit(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::exit(app.exit(e) == 0 ? 0 : kUsageError);
   }
+}
+
+/// A progress bar on standard error for a program that runs frames (gjkx_simulate,
+/// gjkx_bullet_scene): frame `frame` of `frames` done, after `wall` seconds.
+inline void progress(int frame, int frames, double wall) {
+  const int width = 40, done = frames > 0 ? frame * width / frames : width;
+  std::fprintf(stderr, "\r[%s%s] frame %d/%d  %.1f s", std::string(std::size_t(done), '#').c_str(),
+               std::string(std::size_t(width - done), ' ').c_str(), frame, frames, wall);
+  std::fflush(stderr);
 }
 
 }  // namespace chapter

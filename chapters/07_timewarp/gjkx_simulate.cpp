@@ -31,17 +31,6 @@
 #include <fstream>
 #include <iostream>
 
-namespace {
-
-void progress(int frame, int frames, double wall) {
-  const int width = 40, done = frames > 0 ? frame * width / frames : width;
-  std::fprintf(stderr, "\r[%s%s] frame %d/%d  %.1f s", std::string(std::size_t(done), '#').c_str(),
-               std::string(std::size_t(width - done), ' ').c_str(), frame, frames, wall);
-  std::fflush(stderr);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file: bodies in free flight, collisions found by the paper's solver and "
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
@@ -125,7 +114,7 @@ int main(int argc, char** argv) {
                << s.angularVelocity.y() << ',' << s.angularVelocity.z() << ','
                << world->bodies()[b].rigid.kineticEnergy(s) << '\n';
       }
-      if (bar) progress(r.frame, world->frameCount(), wall);
+      if (bar) chapter::progress(r.frame, world->frameCount(), wall);
     }
   } catch (const std::exception& e) {
     if (bar) std::fprintf(stderr, "\n");

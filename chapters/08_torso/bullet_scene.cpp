@@ -335,12 +335,6 @@ gjkx::Bounds sweptBounds(const gjkx::Motion<double>& path, double radius, double
   return box;
 }
 
-void progress(int frame, int frames, double wall) {
-  const int width = 40, done = frames > 0 ? frame * width / frames : width;
-  std::fprintf(stderr, "\r[%s%s] frame %d/%d  %.1f s", std::string(std::size_t(done), '#').c_str(),
-               std::string(std::size_t(width - done), ' ').c_str(), frame, frames, wall);
-  std::fflush(stderr);
-}
 
 }  // namespace
 
@@ -527,7 +521,7 @@ int main(int argc, char** argv) {
                   << s.angularVelocity.y() << ',' << s.angularVelocity.z() << ','
                   << bodies[b].rigid.kineticEnergy(s) << '\n';
       }
-      if (bar) progress(frame, frames, wall);
+      if (bar) chapter::progress(frame, frames, wall);
     }
   } catch (const std::exception& e) {
     if (bar) std::fprintf(stderr, "\n");

@@ -5,8 +5,7 @@
 // plate, CCD off, one step a frame); a bad command line exits 2, a bad scene 1.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include "../run_program.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -21,30 +20,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;     // the exit status
-  std::string output;  // standard output and standard error together
-};
+using Result = test::ProgramResult;
 
 // Runs gjkx_bullet_scene (its path passed in by tests/bullet/CMakeLists.txt) with `arguments`.
-Result run(const std::string& arguments) {
-  const std::string command = std::string("\"") + GJKX_BULLET_SCENE + "\" " + arguments + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+Result run(const std::string& arguments) { return test::runProgram(GJKX_BULLET_SCENE, arguments); }
 
-fs::path freshFolder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("gjkx-bullet-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshFolder(const std::string& name) { return test::freshFolder("gjkx-bullet", name); }
 
 // The key=value pairs of the SUMMARY line of `output` (empty if there is none).
 std::map<std::string, double> summary(const std::string& output) {

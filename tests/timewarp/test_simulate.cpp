@@ -3,8 +3,8 @@
 // tunnels; a bad scene is refused before the run, naming the body and the field.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include "../run_program.hpp"
+
 
 #include <cstdio>
 #include <cstdlib>
@@ -18,30 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;     // the exit status
-  std::string output;  // standard output and standard error together
-};
+using Result = test::ProgramResult;
 
 // Runs gjkx_simulate (its path passed in by tests/CMakeLists.txt) with `arguments`.
-Result simulate(const std::string& arguments) {
-  const std::string command = std::string("\"") + GJKX_SIMULATE + "\" " + arguments + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+Result simulate(const std::string& arguments) { return test::runProgram(GJKX_SIMULATE, arguments); }
 
-fs::path freshFolder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("gjkx-simulate-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshFolder(const std::string& name) { return test::freshFolder("gjkx-simulate", name); }
 
 std::string firstLine(const fs::path& file) {
   std::ifstream in(file);
