@@ -48,10 +48,14 @@ struct World::FrameState {
   std::vector<std::vector<Piece>> pieces;           // per body, the paths of this frame in order
   std::vector<std::pair<int, int>> collidedPairs;   // pairs with a collision reported this frame
   std::vector<Bounds> boxes;                         // Timewarp: each body's swept bounds to the frame's end
-  std::vector<int> collisionsOf;                     // per body, its microcollisions this frame (see resolve)
-  std::vector<std::vector<Eigen::Vector3d>> sidesOf;  // per body, the outward normals it was struck along (up to 8 apart)
-  std::vector<double> lastCollisionOf;               // per body, the time of its last collision this frame
-  std::vector<int> sameInstantOf;                    // per body, its collisions at that very time
+  /// How a body was struck this frame (resolve: Zeno's wedge).
+  struct Struck {
+    int microcollisions = 0;              // its microcollisions
+    std::vector<Eigen::Vector3d> sides;   // the outward normals it was struck along (up to 8, apart)
+    double lastTime = -1;                 // the time of its last collision
+    int atLastTime = 0;                   // its collisions at that very time
+  };
+  std::vector<Struck> struck;                        // per body
 };
 
 namespace {
@@ -628,29 +632,23 @@ void World::resolve(const Hit& hit, FrameState& frame) {
   // setting the other closing (2,600 collisions at one time for a cartilage on the floor).
   // A body in more than `sameInstantAfter` collisions at the very same time is caught too.
   constexpr int caughtAfter = 32, sameInstantAfter = 8;
-  if (frame.collisionsOf.size() != bodies_.size()) {
-    frame.collisionsOf.assign(bodies_.size(), 0);
-    frame.sidesOf.assign(bodies_.size(), {});
-    frame.lastCollisionOf.assign(bodies_.size(), -1.0);
-    frame.sameInstantOf.assign(bodies_.size(), 0);
-  }
   for (const auto& [b, state, outward] : {std::tuple<int, BodyState*, Eigen::Vector3d>{hit.i, &si, hit.normal},
                                           std::tuple<int, BodyState*, Eigen::Vector3d>{hit.j, &sj, -hit.normal}}) {
     if (bodies_[b].rigid.isStatic()) continue;
-    frame.sameInstantOf[b] = frame.lastCollisionOf[b] == hit.time ? frame.sameInstantOf[b] + 1 : 1;
-    frame.lastCollisionOf[b] = hit.time;
+    FrameState::Struck& struck = frame.struck[b];
+    struck.atLastTime = struck.lastTime == hit.time ? struck.atLastTime + 1 : 1;
+    struck.lastTime = hit.time;
     bool wedged = false;
     if (result.status == ImpulseStatus::Microcollision) {
-      auto& sides = frame.sidesOf[b];
       bool seen = false;
-      for (const auto& side : sides) {
+      for (const auto& side : struck.sides) {
         wedged = wedged || side.dot(outward) < 0;
         seen = seen || side.dot(outward) > 0.9;
       }
-      if (!seen && sides.size() < 8) sides.push_back(outward);
-      wedged = ++frame.collisionsOf[b] > caughtAfter && wedged;
+      if (!seen && struck.sides.size() < 8) struck.sides.push_back(outward);
+      wedged = ++struck.microcollisions > caughtAfter && wedged;
     }
-    if (wedged || frame.sameInstantOf[b] > sameInstantAfter) {  // caught: stopped where it stands
+    if (wedged || struck.atLastTime > sameInstantAfter) {  // caught: stopped where it stands
       state->velocity.setZero();
       state->angularVelocity.setZero();
       ++c.caught;
@@ -848,11 +846,16 @@ void World::runFixedStep(double T0, double T1, FrameState& frame) {
 FrameReport World::step() {
   if (done()) throw std::logic_error("World::step: the scene's duration is already simulated");
   const auto start = Clock::now();
-  FrameState frame;
-  frame.pieces.resize(bodies_.size());
-  frame.report.frame = frame_ + 1;
   const double T0 = double(frame_) / scene_.frameRate, T1 = double(frame_ + 1) / scene_.frameRate;
-  frame.report.time = T1;
+  const auto freshFrame = [&] {
+    FrameState fresh;
+    fresh.pieces.resize(bodies_.size());
+    fresh.struck.resize(bodies_.size());
+    fresh.report.frame = frame_ + 1;
+    fresh.report.time = T1;
+    return fresh;
+  };
+  FrameState frame = freshFrame();
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
   // each a quarter turn of the fastest body at most (collisions can spin a body up within
@@ -901,10 +904,7 @@ FrameReport World::step() {
       collisionLog_.resize(logged);
       intervals = needed;
       const PartTimes parts = frame.report.parts;  // the abandoned run's wall time still counts
-      frame = FrameState{};
-      frame.pieces.resize(bodies_.size());
-      frame.report.frame = frame_ + 1;
-      frame.report.time = T1;
+      frame = freshFrame();
       frame.report.parts = parts;
     }
   }
