@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -46,7 +47,14 @@ int main(int argc, char** argv) {
   app.add_option("--variant", variant, "the extrusion test: the paper's or the certified one")
       ->check(CLI::IsMember({"paper", "certified"}));
   app.add_option("--tolerance", tolerance, "override the scene's collision tolerance (length units)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            double value = 0;
+            const bool parsed = CLI::detail::lexical_cast(text, value);
+            return parsed && std::isfinite(value) && value > 0 ? std::string()
+                                                                 : "must be a positive finite length, got " + text;
+          },
+          "POSITIVE"));
   app.add_flag("--no-checks", noChecks, "skip the independent checks (penetration, tunnelling): report them as -1");
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);

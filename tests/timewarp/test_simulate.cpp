@@ -114,3 +114,13 @@ TEST_CASE("gjkx_simulate refuses a scene with an unknown key, naming the body an
   CHECK_FALSE(fs::exists(dir / "out" / "frames.csv"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("gjkx_simulate refuses a collision tolerance that is not a positive finite length", "[simulate]") {
+  for (const std::string value : {"-1", "0", "nan", "inf"}) {
+    const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/ball_drop.json\" --tolerance " + value + " --quiet");
+    INFO(value << ": " << r.output);
+    CHECK(r.status == 2);
+    CHECK(r.output.find("--tolerance") != std::string::npos);
+    CHECK(r.output.find("SUMMARY") == std::string::npos);
+  }
+}
