@@ -377,6 +377,108 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
   }
   return result;
 }
+
+/// The closest points of two segments \f$[a_0, a_1]\f$ and \f$[b_0, b_1]\f$ (either may be a
+/// point), as the parameters (u, v) of \f$x = a_0 + u\,d_1\f$ and \f$y = b_0 + v\,d_2\f$.
+///
+/// Derivation. With \f$d_1 = a_1 - a_0\f$, \f$d_2 = b_1 - b_0\f$, \f$r = a_0 - b_0\f$, minimise
+/// \f$f(u, v) = \lVert r + u\,d_1 - v\,d_2\rVert^2\f$ over the unit square. With
+/// \f$a = d_1\!\cdot d_1\f$, \f$b = d_1\!\cdot d_2\f$, \f$c = d_1\!\cdot r\f$, \f$e = d_2\!\cdot d_2\f$,
+/// \f$f_0 = d_2\!\cdot r\f$ the gradient vanishes where
+/// \f$a u - b v = -c\f$ and \f$b u - e v = -f_0\f$, i.e. \f$u = (b f_0 - c e)/(a e - b^2)\f$.
+/// For a fixed u the best v is \f$(b u + f_0)/e\f$ clamped to [0, 1], for a fixed v the best
+/// u is \f$(b v - c)/a\f$ clamped. f is a convex quadratic, so: take the lines' u clamped
+/// (any u when they are parallel, \f$a e - b^2 = 0\f$), the best v for it, and if that v had
+/// to be clamped, the best u for the clamped v. A point core (a = 0 or e = 0) fixes its
+/// parameter at 0 and the other is one projection.
+template <typename S>
+std::pair<S, S> closestParametersOfSegments(const CoreEnds<S>& A, const CoreEnds<S>& B) {
+  const Vector3<S> d1 = A.b - A.a, d2 = B.b - B.a, r = A.a - B.a;
+  const S a = d1.squaredNorm(), e = d2.squaredNorm(), f0 = d2.dot(r);
+  auto clamp01 = [](S x) { return std::min(S(1), std::max(S(0), x)); };
+  if (a == S(0) && e == S(0)) return {S(0), S(0)};  // two points
+  if (a == S(0)) return {S(0), clamp01(f0 / e)};     // a point and a segment
+  const S c = d1.dot(r);
+  if (e == S(0)) return {clamp01(-c / a), S(0)};     // a segment and a point
+  const S b = d1.dot(d2);
+  const S denominator = a * e - b * b;  // >= 0; round-off size when (nearly) parallel
+  S u = denominator > std::numeric_limits<S>::epsilon() * a * e ? clamp01((b * f0 - c * e) / denominator) : S(0);
+  S v = (b * u + f0) / e;
+  if (v < S(0) || v > S(1)) {
+    v = clamp01(v);
+    u = clamp01((b * v - c) / a);
+  }
+  return {u, v};
+}
+
+/// GJK on two rounded shapes whose cores are points or segments (`HasSegmentCore`): the
+/// spheres and capsules. §2.2's loop on such cores ends in one to three iterations at
+/// the closest points of two segments, which are known in closed form
+/// (`closestParametersOfSegments`), so the scene that needs only these shapes leaves the
+/// general machinery out: no support queries, no sub-algorithm, no warm start (the cache
+/// is neither read nor written). The result is what `gjkOnCores` returns, with the exact
+/// closest features of the cores as its simplex and the distance along z as its lower bound.
+template <typename ShapeP, typename ShapeQ>
+GjkResult<typename ShapeP::Scalar> gjkOnSegmentCores(const ShapeP& P, const ShapeQ& Q,
+                                                     const GjkSettings<typename ShapeP::Scalar>& settings) {
+  using S = typename ShapeP::Scalar;
+  const CoreEnds<S> A = P.coreEnds(), B = Q.coreEnds();
+  const auto [u, v] = closestParametersOfSegments(A, B);
+  const Vector3<S> p = A.a + u * (A.b - A.a), q = B.a + v * (B.b - B.a);  // the cores' closest points
+  const S rP = P.coreRadius(), rQ = Q.coreRadius(), radius = rP + rQ;
+
+  GjkResult<S> result;
+  result.iterations = 1;
+  // The closest feature of V_Q - V_P: a vertex, an edge, or (two edges) the parallelogram of
+  // their differences, written as the triangle of it that holds z, so that
+  // \f$z = \sum_k \lambda_k (q_k - p_k)\f$ as in any GJK simplex.
+  Simplex<S>& x = result.simplex;
+  auto vertex = [&](const Vector3<S>& pk, const Vector3<S>& qk, S lambda) {
+    SimplexVertex<S>& w = x.vertices[x.size];
+    w.p = pk;
+    w.q = qk;
+    w.w = qk - pk;
+    w.s = p - q;  // the direction that finds the closest features
+    w.hintP = w.hintQ = 0;
+    x.lambda[x.size++] = lambda;
+  };
+  const bool edgeP = u > S(0) && u < S(1), edgeQ = v > S(0) && v < S(1);
+  const Vector3<S>& pEnd = u < S(1) ? A.a : A.b;
+  const Vector3<S>& qEnd = v < S(1) ? B.a : B.b;
+  if (edgeP && edgeQ) {
+    if (u + v <= S(1)) {
+      vertex(A.a, B.a, S(1) - u - v), vertex(A.b, B.a, u), vertex(A.a, B.b, v);
+    } else {
+      vertex(A.b, B.b, u + v - S(1)), vertex(A.a, B.b, S(1) - u), vertex(A.b, B.a, S(1) - v);
+    }
+  } else if (edgeP) {
+    vertex(A.a, qEnd, S(1) - u), vertex(A.b, qEnd, u);
+  } else if (edgeQ) {
+    vertex(pEnd, B.a, S(1) - v), vertex(pEnd, B.b, v);
+  } else {
+    vertex(pEnd, qEnd, S(1));
+  }
+  const Vector3<S> zCore = q - p;
+  x.z = zCore;
+  const S dCore = zCore.norm();
+  result.witnessP = p;
+  result.witnessQ = q;
+  if (dCore > S(0)) {
+    result.separatingVector = zCore / dCore;
+    result.lowerBound = dCore - radius;  // SD along z of the cores is their distance (§2.3)
+  }
+  if (!(dCore > radius)) {  // the balls about the cores' closest points overlap
+    result.status = GjkStatus::Overlapping;
+    result.distance = S(0);
+    return result;
+  }
+  result.distance = dCore - radius;
+  result.z = result.separatingVector * result.distance;
+  result.witnessP += rP * result.separatingVector;
+  result.witnessQ -= rQ * result.separatingVector;
+  result.status = result.distance > settings.separationThreshold ? GjkStatus::SeparatingVector : GjkStatus::Separated;
+  return result;
+}
 }  // namespace detail
 
 /// GJK (§2.2): the closest distance between convex sets P and Q, and their closest points.
@@ -396,7 +498,10 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
 /// Rounded shapes (spheres, capsules; support.hpp `IsRounded`) are, by default, handled
 /// by GJK on their cores with the radii subtracted (`detail::gjkOnCores`): the paper's
 /// GJK on the curved surface converges only linearly (16 to 29 iterations on two spheres
-/// at the default tolerance), on the cores it ends in one to three.
+/// at the default tolerance), on the cores it ends in one to three. When both cores are
+/// points or segments (two spheres or capsules, `HasSegmentCore`) and no visitor is
+/// given, those iterations are replaced by their known answer, the closest points of two
+/// segments (`detail::gjkOnSegmentCores`), so such a scene pays for none of the loop.
 ///
 /// @param P, Q      support mappings (any types with `support(s)` and `center()`)
 /// @param settings  tolerances, iteration cap, optional separation threshold
@@ -409,6 +514,12 @@ GjkResult<typename ShapeP::Scalar> gjk(const ShapeP& P, const ShapeQ& Q,
                                        GjkCache<typename ShapeP::Scalar>* cache = nullptr, Visitor&& visit = {}) {
   using S = typename ShapeP::Scalar;
   static_assert(std::is_same_v<S, typename ShapeQ::Scalar>, "P and Q must use the same scalar type");
+  // Two spheres or capsules: the cores' answer in closed form (`detail::gjkOnSegmentCores`).
+  // A visitor sees the loop itself, so a trace still runs it.
+  if constexpr (HasSegmentCore<ShapeP>::value && HasSegmentCore<ShapeQ>::value &&
+                std::is_same_v<std::decay_t<Visitor>, NoGjkVisitor>) {
+    if (settings.roundedCores) return detail::gjkOnSegmentCores(P, Q, settings);
+  }
   if constexpr (IsRounded<ShapeP>::value || IsRounded<ShapeQ>::value) {
     const S rP = coreRadiusOf(P), rQ = coreRadiusOf(Q);
     if (settings.roundedCores && (rP > S(0) || rQ > S(0)))

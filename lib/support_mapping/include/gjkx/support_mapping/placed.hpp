@@ -43,6 +43,12 @@ struct Placed {
   Vector3<Scalar> coreSupport(const Vector3<Scalar>& s, SupportHint& hint) const {
     return worldFromBody(shape.coreSupport(worldFromBody.toBodyDirection(s), hint));
   }
+  /// The placed core's ends, when the core is a point or a segment (`HasSegmentCore`).
+  template <typename X = Shape, typename = std::enable_if_t<HasSegmentCore<X>::value>>
+  CoreEnds<Scalar> coreEnds() const {
+    const CoreEnds<Scalar> c = shape.coreEnds();
+    return {worldFromBody(c.a), worldFromBody(c.b)};
+  }
 };
 
 /// `place(shape, pose)`: the shape at a pose (the pose is checked).

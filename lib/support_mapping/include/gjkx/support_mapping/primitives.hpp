@@ -126,6 +126,8 @@ struct Sphere {
   S coreRadius() const { return radius; }
   /// The support of the core: the centre, whatever the direction.
   Vector3<S> coreSupport(const Vector3<S>& /*s*/, SupportHint& /*hint*/) const { return Vector3<S>::Zero(); }
+  /// The core as a degenerate segment: the centre twice (support.hpp, `HasSegmentCore`).
+  CoreEnds<S> coreEnds() const { return {Vector3<S>::Zero(), Vector3<S>::Zero()}; }
 };
 
 /// The capsule: all points within r of the segment [a, b]. Its support is the
@@ -157,6 +159,8 @@ struct Capsule {
   S coreRadius() const { return radius; }
   /// The support of the core: the axis segment's.
   Vector3<S> coreSupport(const Vector3<S>& s, SupportHint& /*hint*/) const { return axis.support(s); }
+  /// The core: the axis segment (support.hpp, `HasSegmentCore`).
+  CoreEnds<S> coreEnds() const { return {axis.a, axis.b}; }
 
  private:
   static const Vector3<S>& checked(const Vector3<S>& end, const char* field) {

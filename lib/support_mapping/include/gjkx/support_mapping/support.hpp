@@ -62,6 +62,24 @@ struct IsRounded : std::false_type {};
 template <typename X>
 struct IsRounded<X, std::void_t<decltype(std::declval<const X&>().coreRadius())>> : std::true_type {};
 
+/// The ends of a core that is a point or a segment: \f$C = [a, b]\f$ (a = b for a point).
+template <typename S>
+struct CoreEnds {
+  /// First end.
+  Vector3<S> a;
+  /// Second end (equal to `a` when the core is a point).
+  Vector3<S> b;
+};
+
+/// A rounded shape whose core is a point (the sphere) or a segment (the capsule) says so
+/// with `CoreEnds<Scalar> coreEnds() const`. GJK on two such cores has a known answer,
+/// the closest points of two segments, and skips the general machinery (`gjk`).
+template <typename X, typename = void>
+struct HasSegmentCore : std::false_type {};
+/// A shape with `coreEnds()` has a point or segment for its core.
+template <typename X>
+struct HasSegmentCore<X, std::void_t<decltype(std::declval<const X&>().coreEnds())>> : std::true_type {};
+
 /// The radius r of a rounded shape \f$C \oplus B(r)\f$; 0 for any other shape.
 template <typename X>
 typename X::Scalar coreRadiusOf(const X& x) {
