@@ -1,7 +1,7 @@
 // toi_profile: one method of the time-of-impact study run once per query, without timing
 // loops, so that an instruction count under callgrind is repeatable and per query.
 //
-//   toi_profile [--method ours|certified|fcl_ca|bullet] [--workload NAME]... [--queries N] [--repeat N] [--tol T]
+//   toi_profile [--method ours|certified|fcl_ca|bullet|box2d] [--workload NAME]... [--queries N] [--repeat N] [--tol T]
 //
 // Builds the quick workloads of workloads.hpp (40 queries each unless --queries), then runs
 // the chosen method `--repeat` times (default 1) on every query of the chosen workloads
@@ -15,6 +15,15 @@
 //
 // The total instruction count divided by the "calls" line (queries x repeat) is the
 // instruction count per query; the same command with --method fcl_ca gives the peer's.
+//
+// The planar set (`--workload planar_2d`) runs with ours, certified and box2d. For Box2D
+// the line adds its own counters, read from the library: b2Distance calls and their
+// iterations (one support pair each) per query, and b2TimeOfImpact's iterations (each
+// finds the deepest points along a separating axis: one support pair) and its root
+// finder's (one evaluation of that axis's separation: one support pair). Ours counts support-pair evaluations as `sd_evaluations` (every GJK
+// iteration and every supporting distance of a stored vector). Instructions per query
+// divided by evaluations per query, for each, splits the gap to Box2D into "how many
+// evaluations" and "what one evaluation costs" (a 3D solver in the plane against a 2D one).
 #include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
@@ -49,8 +58,10 @@ struct Options {
 Options parse(int argc, char** argv) {
   Options o;
   CLI::App app{"Runs one time-of-impact method once per query (no timing), for callgrind."};
-  app.add_option("--method", o.method, "the method")->check(CLI::IsMember({"ours", "certified", "fcl_ca", "bullet"}))->capture_default_str();
-  app.add_option("--workload", o.workloads, "a 3D workload to run (repeatable; default: every one)")->type_name("NAME");
+  app.add_option("--method", o.method, "the method")
+      ->check(CLI::IsMember({"ours", "certified", "fcl_ca", "bullet", "box2d"}))
+      ->capture_default_str();
+  app.add_option("--workload", o.workloads, "a workload to run (repeatable; default: every one the method runs on)")->type_name("NAME");
   app.add_option("--queries", o.queries, "queries per workload")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--repeat", o.repeat, "calls per query")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--tol", o.tol, "collision tolerance of ours")->type_name("T")->check(CLI::PositiveNumber)->capture_default_str();
@@ -62,6 +73,14 @@ Options parse(int argc, char** argv) {
 struct Counts {
   long long gjkRuns = 0, brentIterations = 0, restarts = 0, sdEvaluations = 0;
 };
+
+#if GJKX_HAVE_BOX2D
+}  // namespace
+// Box2D 2.4's own counters: defined and exported by the library (b2_distance.cpp,
+// b2_time_of_impact.cpp), not declared in its installed headers.
+extern int b2_gjkCalls, b2_gjkIters, b2_toiCalls, b2_toiIters, b2_toiRootIters;
+namespace {
+#endif
 
 // `repeat` calls of `run` with callgrind counting (when built with valgrind's header);
 // the last call's answer.
@@ -101,11 +120,16 @@ int main(int argc, char** argv) {
   const std::vector<ToiWorkload> workloads = makeWorkloads(wo);
   bool any = false;
   for (const ToiWorkload& w : workloads) {
-    if (w.planar) continue;  // FCL and Bullet run on the 3D workloads only
+    const bool box2d = o.method == "box2d";
+    if (w.planar != box2d && (box2d || o.method == "fcl_ca" || o.method == "bullet")) continue;  // FCL, Bullet: 3D only; Box2D: 2D only
+    if (w.planar && o.workloads.empty() && !box2d) continue;  // ours runs the planar set when it is asked for
     if (!o.workloads.empty() && std::find(o.workloads.begin(), o.workloads.end(), w.name) == o.workloads.end()) continue;
     any = true;
     int hits = 0, misses = 0, falseAlarms = 0;
     Counts counts;
+#if GJKX_HAVE_BOX2D
+    b2_gjkCalls = b2_gjkIters = b2_toiCalls = b2_toiIters = b2_toiRootIters = 0;
+#endif
     for (const ToiQuery& q : w.queries) {
       comparison::Outcome out;
       if (o.method == "ours" || o.method == "certified") {
@@ -118,6 +142,15 @@ int main(int argc, char** argv) {
         out = comparison::Outcome{r.hit, r.time};
 #else
         std::fprintf(stderr, "toi_profile: FCL was not found at build time\n");
+        return 1;
+#endif
+      } else if (box2d) {
+#if GJKX_HAVE_BOX2D
+        const peers::Box2dQuery query(q);
+        const peers::PeerOutcome r = profiled(o.repeat, [&] { return query.run(); });
+        out = comparison::Outcome{r.hit, r.time};
+#else
+        std::fprintf(stderr, "toi_profile: Box2D was not found at build time\n");
         return 1;
 #endif
       } else {
@@ -140,10 +173,15 @@ int main(int argc, char** argv) {
     if (o.method == "ours" || o.method == "certified")
       std::printf(" gjk_runs=%.2f brent_iterations=%.2f restarts=%.2f sd_evaluations=%.2f", counts.gjkRuns / n,
                   counts.brentIterations / n, counts.restarts / n, counts.sdEvaluations / n);
+#if GJKX_HAVE_BOX2D
+    if (box2d)
+      std::printf(" distance_calls=%.2f distance_iterations=%.2f toi_iterations=%.2f root_iterations=%.2f", b2_gjkCalls / n / o.repeat,
+                  b2_gjkIters / n / o.repeat, b2_toiIters / n / o.repeat, b2_toiRootIters / n / o.repeat);
+#endif
     std::printf("\n");
   }
   if (!any) {
-    std::fprintf(stderr, "toi_profile: no 3D workload matched\n");
+    std::fprintf(stderr, "toi_profile: no workload matched for this method\n");
     return 2;
   }
   return 0;
