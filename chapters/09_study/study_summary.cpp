@@ -8,6 +8,7 @@
 // condensed tables and the CCD totals, then
 //   RATIO <comparison> ours_vs_best_peer=X best_peer=NAME   (ours median time / fastest peer's, same run)
 //   RATIO toi_<workload> ours_vs_fcl_ca=X                    (ours double tol 1e-7 / FCL conservative advancement)
+//   RATIO toi_<workload> ours_vs_fcl_ca_mean=X, ours_vs_bullet_mean=X   (the same by mean time per query)
 // and one line per method and time-of-impact workload:
 //   MISSES method=<name> workload=<name> misses=N false_alarms=N queries=N
 // For the time of impact "ours" in the RATIO lines is the paper's variant in double at

@@ -48,6 +48,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <string>
 #include <variant>
 #include <vector>
@@ -83,6 +84,7 @@ struct ToiRow {
   std::vector<double> errors;  ///< |t - t_ref| over the hits both report
   double errMedian = std::numeric_limits<double>::quiet_NaN(), errMax = std::numeric_limits<double>::quiet_NaN();
   double medianUs = 0, p99Us = 0;
+  double meanUs = 0;  ///< the mean: a method with a heavy tail can lead on the median and trail on the mean
   double meanGjkRuns = 0;  ///< GJK runs per query (methods of ours)
   /// "family setting scalar" without the dashes, e.g. "ours tol=1e-7 double".
   std::string label() const {
@@ -386,6 +388,7 @@ inline ToiStudyResults runToiComparisons(const ToiStudyOptions& options) {
       row.meanGjkRuns /= std::max(1, row.queries);
       row.medianUs = detail::median(times);
       row.p99Us = detail::quantile(times, 0.99);
+      row.meanUs = std::accumulate(times.begin(), times.end(), 0.0) / double(std::max<std::size_t>(1, times.size()));
       if (!row.errors.empty()) {
         row.errMedian = detail::median(row.errors);
         row.errMax = *std::max_element(row.errors.begin(), row.errors.end());
@@ -421,19 +424,25 @@ inline const char* toiTableHeader() {
 }
 
 /// The RATIO lines of the ToI comparison: ours (double, tol 1e-7) against the fastest peer
-/// and against FCL's conservative advancement (default solver, libccd), per workload.
+/// and against FCL's conservative advancement (default solver, libccd), per workload, by
+/// median time; and, by mean time, against FCL's conservative advancement and Bullet (the
+/// peers' times have heavy tails: the two statistics can rank the methods differently).
 inline std::vector<std::string> toiRatioLines(const std::vector<ToiRow>& rows) {
   std::vector<std::string> order;
-  std::map<std::string, double> ours, best, fclCa;
+  std::map<std::string, double> ours, best, fclCa, oursMean, fclCaMean, bulletMean;
   std::map<std::string, std::string> bestName;
   for (const auto& r : rows) {
     if (std::find(order.begin(), order.end(), r.workload) == order.end()) order.push_back(r.workload);
-    if (r.family == "ours" && r.setting == "tol=1e-7" && r.scalar == "double") ours[r.workload] = r.medianUs;
+    if (r.family == "ours" && r.setting == "tol=1e-7" && r.scalar == "double") {
+      ours[r.workload] = r.medianUs;
+      oursMean[r.workload] = r.meanUs;
+    }
     if (!r.ours && (!best.count(r.workload) || r.medianUs < best[r.workload])) {
       best[r.workload] = r.medianUs;
       bestName[r.workload] = r.family + (r.setting == "-" ? "" : " " + r.setting);
     }
-    if (r.family == "FCL CA") fclCa[r.workload] = r.medianUs;
+    if (r.family == "FCL CA") fclCa[r.workload] = r.medianUs, fclCaMean[r.workload] = r.meanUs;
+    if (r.family == "Bullet") bulletMean[r.workload] = r.meanUs;
   }
   std::vector<std::string> lines;
   for (const auto& w : order) {
@@ -446,6 +455,12 @@ inline std::vector<std::string> toiRatioLines(const std::vector<ToiRow>& rows) {
     }
     if (fclCa.count(w)) {
       std::snprintf(line, sizeof line, "RATIO toi_%s ours_vs_fcl_ca=%.2f", w.c_str(), ours[w] / fclCa[w]);
+      lines.push_back(line);
+      std::snprintf(line, sizeof line, "RATIO toi_%s ours_vs_fcl_ca_mean=%.2f", w.c_str(), oursMean[w] / fclCaMean[w]);
+      lines.push_back(line);
+    }
+    if (bulletMean.count(w)) {
+      std::snprintf(line, sizeof line, "RATIO toi_%s ours_vs_bullet_mean=%.2f", w.c_str(), oursMean[w] / bulletMean[w]);
       lines.push_back(line);
     }
   }
