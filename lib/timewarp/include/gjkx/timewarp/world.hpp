@@ -72,7 +72,7 @@ struct FrameCounters {
   long piecePairs = 0;          ///< convex piece pairs of mesh bodies that the 14-DOP hierarchy handed to the solver
   long kdopNodes = 0;           ///< nodes of the hierarchies' test trees visited (kdop)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
-  int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported
+  int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported (by more than twice the tolerance, or a tolerance deeper than they started the frame)
 };
 
 /// Wall time of a frame by part (seconds), as Fig. 6 of the paper splits it.
@@ -128,6 +128,16 @@ struct WorldBody {
   double radius = 0;                ///< bounding radius about the centre of mass
   FreeFlight path;                  ///< its path from its last event to its local time `path.t1`
   int version = 0;                  ///< bumped when its path changes: events that used the old one are stale
+  /// Caught at rest against a static body (World::resolve) and not struck since: it is held
+  /// where it stands, gravity off, and its pairs with static and sleeping bodies are not
+  /// looked at, until a collision with a moving body wakes it.
+  bool asleep = false;
+  /// The gravity its path feels: none while it sleeps.
+  Eigen::Vector3d gravity(const Eigen::Vector3d& sceneGravity) const {
+    return asleep ? Eigen::Vector3d::Zero() : sceneGravity;
+  }
+  /// A body that cannot move of its own accord: static, or asleep.
+  bool resting() const { return asleep || rigid.isStatic(); }
 };
 
 /// The world of a scene, run frame by frame.
