@@ -130,6 +130,16 @@ TEST_CASE("checks: a convex body against a convex body is their piece distance")
   CHECK(referenceSignedDistance(a, poseA, b, poseB) == referencePieceDistance(a.pieces[0], poseA, b.pieces[0], poseB));
 }
 
+TEST_CASE("checks: a pose that is not finite is refused, not measured as infinitely far") {
+  WorldBody a;
+  a.pieces = {Sphere<double>(0.5), Box<double>(Eigen::Vector3d(0.1, 0.1, 0.1))};
+  const ReferenceBody ref(a);
+  Pose<double> bad = Pose<double>::identity();
+  bad.translation.x() = std::nan("");
+  CHECK_THROWS_WITH(referenceSignedDistance(ref, bad, ref, Pose<double>::identity()), Catch::Contains("not finite"));
+  CHECK_THROWS_WITH(referenceSignedDistance(ref, Pose<double>::identity(), ref, bad), Catch::Contains("not finite"));
+}
+
 TEST_CASE("checks: a body with no pieces is refused by name") {
   WorldBody empty;
   empty.name = "ghost";

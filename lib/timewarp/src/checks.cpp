@@ -14,6 +14,7 @@
 #include <tuple>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace gjkx {
@@ -296,6 +297,11 @@ double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA
   // less than any gap that matters.
   const double scale = poseA.translation.norm() + poseB.translation.norm() + a.extent_ + b.extent_;
   const double margin = 1e-9 * (1 + scale) + 2 * (stretch(poseA) + stretch(poseB)) * scale;
+  // A NaN would fail every comparison below and leave the least at infinity, silently.
+  if (!std::isfinite(margin))
+    throw std::invalid_argument("referenceSignedDistance: a pose is not finite (poseA.translation " +
+                                std::to_string(poseA.translation.norm()) + ", poseB.translation " +
+                                std::to_string(poseB.translation.norm()) + ")");
 
   // The pieces placed in the world when first needed: a search looks at a few of the tree's.
   std::vector<std::optional<PlacedPiece>> queryPlaced(query.pieces_.size());

@@ -87,7 +87,7 @@ class ReferenceBody {
 /// of the body with fewer are searched against the other's sphere tree, nearest first by
 /// conservative lower bounds (the gap of bounding spheres, then the supporting distance
 /// along the line of their centres, §2.3), and only pairs whose bound may beat the least
-/// found are measured.
+/// found are measured. Throws std::invalid_argument for a pose that is not finite.
 double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA, const ReferenceBody& b,
                                const Pose<double>& poseB);
 
