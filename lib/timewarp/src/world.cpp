@@ -270,6 +270,9 @@ World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene),
     body.path = freeFlight(body.rigid, start, 0.0, end, scene.gravity);
     bodies_.push_back(std::move(body));
   }
+  // The checks' own view of every body: piece clouds and a sphere tree, made once rather
+  // than on each of the many distances a frame's checks take.
+  for (const WorldBody& body : bodies_) referenceBodies_.push_back(std::make_shared<const ReferenceBody>(body));
   // Two bodies overlapping at the start are an error (static ones may meet: walls of a box).
   std::vector<Bounds> boxes;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -280,8 +283,8 @@ World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene),
   }
   const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic(); });
   for (const auto& [i, j] : pairs) {
-    const double d = referenceSignedDistance(bodies_[i], bodies_[i].path.start.worldFromBody, bodies_[j],
-                                             bodies_[j].path.start.worldFromBody);
+    const double d = referenceSignedDistance(*referenceBodies_[i], bodies_[i].path.start.worldFromBody,
+                                             *referenceBodies_[j], bodies_[j].path.start.worldFromBody);
     if (d < -scene.collisionTolerance)
       throw std::invalid_argument(scene.bodies[i].name.empty() ? "" :
                                   "body '" + bodies_[i].name + "' (bodies[" + std::to_string(i) + "]) and body '" +
@@ -972,20 +975,19 @@ void World::runChecks(double T0, double T1, FrameState& frame) {
   }
   const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic(); });
   for (const auto& [i, j] : pairs) {
-    const double d = referenceSignedDistance(bodies_[i], poseAt(i, T1), bodies_[j], poseAt(j, T1));
+    const double d = referenceSignedDistance(*referenceBodies_[i], poseAt(i, T1), *referenceBodies_[j], poseAt(j, T1));
     c.maxPenetration = std::max(c.maxPenetration, -d);
     // Tunnelling: a pair with no collision reported this frame that came closer than
-    // minus twice the tolerance (interpenetrated) at some time of the frame.
+    // minus twice the tolerance (interpenetrated) at some time of the frame (checks.hpp,
+    // tunnellingThreshold).
     const bool reported = std::find(frame.collidedPairs.begin(), frame.collidedPairs.end(), std::make_pair(i, j)) !=
                           frame.collidedPairs.end();
     if (reported) continue;
     const double lipschitz = speedBound(i, frame) + speedBound(j, frame);
     const int a = i, b = j;  // a lambda may not capture structured bindings in C++17
-    const auto distanceAt = [&](double t) { return referenceSignedDistance(bodies_[a], poseAt(a, t), bodies_[b], poseAt(b, t)); };
-    // A pair that starts the frame already deeper than that (two bodies left resting in each
-    // other) has not tunnelled unless it goes a tolerance deeper still; its depth is counted
-    // in maxPenetration.
-    const double threshold = std::min(-2 * scene_.collisionTolerance, distanceAt(T0) - scene_.collisionTolerance);
+    const ReferenceBody &ra = *referenceBodies_[a], &rb = *referenceBodies_[b];
+    const auto distanceAt = [&](double t) { return referenceSignedDistance(ra, poseAt(a, t), rb, poseAt(b, t)); };
+    const double threshold = tunnellingThreshold(distanceAt(T0), scene_.collisionTolerance);
     if (firstInterpenetration(distanceAt, lipschitz, threshold, T0, T1)) ++c.tunnelled;
   }
 }

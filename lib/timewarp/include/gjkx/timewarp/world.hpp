@@ -43,6 +43,8 @@
 
 namespace gjkx {
 
+class ReferenceBody;  // checks.hpp
+
 /// Settings of the world that are not part of a scene (they choose how, not what).
 struct WorldSettings {
   /// The extrusion test of the solver: the paper's or the certified one (never misses
@@ -193,6 +195,8 @@ class World {
   Scene scene_;
   WorldSettings settings_;
   std::vector<WorldBody> bodies_;
+  /// The bodies as the independent checks measure them (checks.hpp), prepared once.
+  std::vector<std::shared_ptr<const ReferenceBody>> referenceBodies_;
   ImpulseSettings impulse_;
   int frame_ = 0;
   int frameCount_ = 0;

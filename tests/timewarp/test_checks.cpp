@@ -1,0 +1,148 @@
+// The independent checks' distance of two many-piece bodies (checks.hpp): the search that
+// measures only the piece pairs its bounds cannot rule out gives the least over all piece
+// pairs, to the bit, measured pair by pair with referencePieceDistance.
+#include <gjkx/timewarp/checks.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+using namespace gjkx;
+
+namespace {
+
+/// The least referencePieceDistance over every piece pair: what the search must equal.
+double allPairs(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b, const Pose<double>& poseB) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const auto& pa : a.pieces)
+    for (const auto& pb : b.pieces) least = std::min(least, referencePieceDistance(pa, poseA, pb, poseB));
+  return least;
+}
+
+Eigen::Vector3d uniform(std::mt19937& rng, double lo, double hi) {
+  std::uniform_real_distribution<double> u(lo, hi);
+  return {u(rng), u(rng), u(rng)};
+}
+
+Pose<double> randomPose(std::mt19937& rng, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const Eigen::Quaterniond q(Eigen::Vector4d(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5).normalized());
+  Pose<double> pose;
+  pose.rotation = q.toRotationMatrix();
+  for (int k = 0; k < 3; ++k) pose.translation[k] = lo[k] + (hi[k] - lo[k]) * u(rng);
+  return pose;
+}
+
+/// A bone-like body: small hulls (the reference measures them), two hulls of more than 16
+/// vertices (GJK measures them), a box, a sphere and a capsule, about a 0.2-wide cluster.
+WorldBody boneLike(std::mt19937& rng) {
+  WorldBody body;
+  body.name = "bone";
+  for (int k = 0; k < 6; ++k) {
+    const Eigen::Vector3d centre = uniform(rng, -0.08, 0.08);
+    std::vector<Eigen::Vector3d> points;
+    for (int p = 0; p < 7; ++p) points.push_back(centre + uniform(rng, -0.03, 0.03));
+    body.pieces.push_back(Polytope<double>::hull(points));
+  }
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3d centre = uniform(rng, -0.08, 0.08);
+    std::vector<Eigen::Vector3d> points;
+    for (int p = 0; p < 40; ++p) points.push_back(centre + 0.03 * uniform(rng, -1, 1).normalized());
+    body.pieces.push_back(Polytope<double>::hull(points));
+  }
+  body.pieces.push_back(Box<double>(Eigen::Vector3d(0.03, 0.02, 0.01)));
+  body.pieces.push_back(Sphere<double>(0.02));
+  body.pieces.push_back(Capsule<double>(Eigen::Vector3d(-0.05, 0.05, 0), Eigen::Vector3d(0.05, 0.05, 0), 0.01));
+  return body;
+}
+
+/// A plant-like body: thin prisms on the triangles of a wavy sheet in z in [0, 0.1], the
+/// triangles sharing vertices as a leaf's do (pairs of pieces at equal distance).
+WorldBody plantLike(int cells) {
+  WorldBody body;
+  body.name = "plant";
+  auto sheet = [&](int i, int j) {
+    const double x = 0.4 * i / cells - 0.2, y = 0.4 * j / cells - 0.2;
+    return Eigen::Vector3d(x, y, 0.05 + 0.05 * std::sin(9 * x) * std::cos(7 * y));
+  };
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)
+      for (int half = 0; half < 2; ++half) {
+        const Eigen::Vector3d a = sheet(i, j), b = half ? sheet(i + 1, j + 1) : sheet(i + 1, j),
+                              c = half ? sheet(i, j + 1) : sheet(i + 1, j + 1);
+        const Eigen::Vector3d back = -1e-3 * (b - a).cross(c - a).normalized();
+        body.pieces.push_back(Polytope<double>::hull({a, b, c, a + back, b + back, c + back}));
+      }
+  return body;
+}
+
+}  // namespace
+
+TEST_CASE("checks: the pruned search equals the least over all piece pairs, bone against plant") {
+  std::mt19937 rng(11);
+  const WorldBody bone = boneLike(rng), plant = plantLike(7);  // 11 pieces against 98
+  const ReferenceBody boneRef(bone), plantRef(plant);
+  REQUIRE(boneRef.pieceCount() == 11);
+  REQUIRE(plantRef.pieceCount() == 98);
+  int overlapping = 0, apart = 0;
+  for (int k = 0; k < 18; ++k) {
+    // Over the sheet, from well inside it to well clear of it; the plant moved and turned too.
+    const Pose<double> poseBone = randomPose(rng, {-0.2, -0.2, -0.05}, {0.2, 0.2, 0.3});
+    const Pose<double> posePlant = k % 3 == 0 ? Pose<double>::identity() : randomPose(rng, {0, 0, 0}, {1e-3, 1e-3, 1e-3});
+    const double expected = allPairs(bone, poseBone, plant, posePlant);
+    CAPTURE(k, expected);
+    // Either order: the body with fewer pieces queries the other's tree.
+    CHECK(referenceSignedDistance(boneRef, poseBone, plantRef, posePlant) == expected);
+    CHECK(referenceSignedDistance(plantRef, posePlant, boneRef, poseBone) == allPairs(plant, posePlant, bone, poseBone));
+    (expected < 0 ? overlapping : apart) += 1;
+  }
+  // The poses must cover both sides of contact, or the test says little.
+  CHECK(overlapping >= 3);
+  CHECK(apart >= 3);
+}
+
+TEST_CASE("checks: the pruned search equals the least over all piece pairs, near ties of two bones") {
+  std::mt19937 rng(5);
+  const WorldBody a = boneLike(rng), b = boneLike(rng);
+  const ReferenceBody refA(a), refB(b);
+  for (int k = 0; k < 24; ++k) {
+    const Pose<double> poseA = randomPose(rng, {0, 0, 0}, {0, 0, 0});
+    const Pose<double> poseB = randomPose(rng, {-0.25, -0.25, -0.25}, {0.25, 0.25, 0.25});
+    CAPTURE(k);
+    CHECK(referenceSignedDistance(refA, poseA, refB, poseB) == allPairs(a, poseA, b, poseB));
+  }
+  // A body against itself at the same pose: every piece overlaps its twin.
+  const Pose<double> pose = randomPose(rng, {-1, -1, -1}, {1, 1, 1});
+  CHECK(referenceSignedDistance(refA, pose, refA, pose) == allPairs(a, pose, a, pose));
+  CHECK(referenceSignedDistance(refA, pose, refA, pose) < 0);
+}
+
+TEST_CASE("checks: a convex body against a convex body is their piece distance") {
+  WorldBody a, b;
+  a.pieces = {Sphere<double>(0.5)};
+  b.pieces = {Box<double>(Eigen::Vector3d(1, 1, 1))};
+  const Pose<double> poseA = Pose<double>::translate(Eigen::Vector3d(0, 0, 2)), poseB = Pose<double>::identity();
+  CHECK(referenceSignedDistance(ReferenceBody(a), poseA, ReferenceBody(b), poseB) == Approx(0.5).epsilon(1e-12));
+  CHECK(referenceSignedDistance(a, poseA, b, poseB) == referencePieceDistance(a.pieces[0], poseA, b.pieces[0], poseB));
+}
+
+TEST_CASE("checks: a pose that is not finite is refused, not measured as infinitely far") {
+  WorldBody a;
+  a.pieces = {Sphere<double>(0.5), Box<double>(Eigen::Vector3d(0.1, 0.1, 0.1))};
+  const ReferenceBody ref(a);
+  Pose<double> bad = Pose<double>::identity();
+  bad.translation.x() = std::nan("");
+  CHECK_THROWS_WITH(referenceSignedDistance(ref, bad, ref, Pose<double>::identity()), Catch::Contains("not finite"));
+  CHECK_THROWS_WITH(referenceSignedDistance(ref, Pose<double>::identity(), ref, bad), Catch::Contains("not finite"));
+}
+
+TEST_CASE("checks: a body with no pieces is refused by name") {
+  WorldBody empty;
+  empty.name = "ghost";
+  empty.pieces.clear();
+  CHECK_THROWS_WITH(ReferenceBody(empty), Catch::Contains("ghost") && Catch::Contains("no pieces"));
+}
