@@ -14,7 +14,7 @@ set tmargin at screen 0.89
 set bmargin at screen 0.56
 set logscale y
 set format y '%g'
-set yrange [0.01:1000]
+set yrange [0.01:100]
 set format x ''
 set ylabel 'execution / simulation time' offset 1,0
 plot 1.000000 with filledcurves y=7.900000 fs transparent solid 0.25 lc rgb '#999999' title 'paper (500 MHz Pentium III): 1.0 to 7.9', \
@@ -25,7 +25,7 @@ unset logscale y
 set format x '%g'
 set tmargin at screen 0.50
 set bmargin at screen 0.08
-set yrange [0:105.487]
+set yrange [0:25.9297]
 set format y '%g'
 set ylabel 'execution / simulation time (linear: the parts)' offset 1,0
 set xlabel 'simulated time (s)'
