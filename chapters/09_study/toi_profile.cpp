@@ -120,9 +120,10 @@ int main(int argc, char** argv) {
   const std::vector<ToiWorkload> workloads = makeWorkloads(wo);
   bool any = false;
   for (const ToiWorkload& w : workloads) {
-    const bool box2d = o.method == "box2d";
-    if (w.planar != box2d && (box2d || o.method == "fcl_ca" || o.method == "bullet")) continue;  // FCL, Bullet: 3D only; Box2D: 2D only
-    if (w.planar && o.workloads.empty() && !box2d) continue;  // ours runs the planar set when it is asked for
+    const bool box2d = o.method == "box2d", ours = o.method == "ours" || o.method == "certified";
+    if (box2d && !w.planar) continue;                         // Box2D: the planar set only
+    if (!box2d && !ours && w.planar) continue;                // FCL, Bullet: the 3D workloads only
+    if (ours && w.planar && o.workloads.empty()) continue;    // ours: the planar set when it is named
     if (!o.workloads.empty() && std::find(o.workloads.begin(), o.workloads.end(), w.name) == o.workloads.end()) continue;
     any = true;
     int hits = 0, misses = 0, falseAlarms = 0;
@@ -132,7 +133,13 @@ int main(int argc, char** argv) {
 #endif
     for (const ToiQuery& q : w.queries) {
       comparison::Outcome out;
-      if (o.method == "ours" || o.method == "certified") {
+      // A peer's query object, run `repeat` times under the profiler.
+      const auto runPeer = [&](const auto& query) {
+        const peers::PeerOutcome r = profiled(o.repeat, [&] { return query.run(); });
+        return comparison::Outcome{r.hit, r.time};
+      };
+      (void)runPeer;  // (unused when no peer was found at build time)
+      if (ours) {
         const comparison::Prepared<double> p(q);
         out = runOurs(p, o, counts);
       } else if (o.method == "fcl_ca") {
@@ -146,18 +153,14 @@ int main(int argc, char** argv) {
 #endif
       } else if (box2d) {
 #if GJKX_HAVE_BOX2D
-        const peers::Box2dQuery query(q);
-        const peers::PeerOutcome r = profiled(o.repeat, [&] { return query.run(); });
-        out = comparison::Outcome{r.hit, r.time};
+        out = runPeer(peers::Box2dQuery(q));
 #else
         std::fprintf(stderr, "toi_profile: Box2D was not found at build time\n");
         return 1;
 #endif
       } else {
 #if GJKX_HAVE_BULLET
-        const peers::BulletQuery bullet(q);
-        const peers::PeerOutcome r = profiled(o.repeat, [&] { return bullet.run(); });
-        out = comparison::Outcome{r.hit, r.time};
+        out = runPeer(peers::BulletQuery(q));
 #else
         std::fprintf(stderr, "toi_profile: Bullet was not found at build time\n");
         return 1;
@@ -170,7 +173,7 @@ int main(int argc, char** argv) {
     const double n = double(w.queries.size());
     std::printf("PROFILE method=%s workload=%s queries=%zu repeat=%d calls=%lld hits=%d misses=%d false_alarms=%d", o.method.c_str(),
                 w.name.c_str(), w.queries.size(), o.repeat, (long long)w.queries.size() * o.repeat, hits, misses, falseAlarms);
-    if (o.method == "ours" || o.method == "certified")
+    if (ours)
       std::printf(" gjk_runs=%.2f brent_iterations=%.2f restarts=%.2f sd_evaluations=%.2f", counts.gjkRuns / n,
                   counts.brentIterations / n, counts.restarts / n, counts.sdEvaluations / n);
 #if GJKX_HAVE_BOX2D

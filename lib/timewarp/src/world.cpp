@@ -726,8 +726,8 @@ void World::runTimewarp(double T0, double T1, FrameState& frame) {
     for (int b : {i, j}) {
       if (bodies_[b].rigid.isStatic()) continue;
       for (int k = 0; k < int(bodies_.size()); ++k)
-        if (k != b && frame.boxes[b].overlaps(frame.boxes[k]))
-          pairs.emplace_back(std::min(b, k), std::max(b, k));
+        if (k != b && !(bodies_[b].resting() && bodies_[k].resting()) && frame.boxes[b].overlaps(frame.boxes[k]))
+          pairs.emplace_back(std::min(b, k), std::max(b, k));  // (two resting bodies: no collision, as in candidatePairs)
     }
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
