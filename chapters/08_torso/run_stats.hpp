@@ -52,6 +52,7 @@ struct Run {
   std::map<std::string, std::vector<double>> column;  ///< frames.csv, one value per frame
   std::string summary;                                ///< the SUMMARY line (empty without summary.txt)
   std::string settings;                               ///< the RUN line: scene, scalar, tolerance... (may be empty)
+  std::map<std::string, double> work;                 ///< the WORK line's counts by key (empty when it has none)
 
   /// The frames read.
   std::size_t frames() const { return column.at("frame").size(); }
@@ -130,6 +131,18 @@ inline Run readRun(const std::string& folder) {
   for (std::string text; std::getline(summary, text);) {
     if (text.rfind("SUMMARY ", 0) == 0) run.summary = text.substr(8);
     if (text.rfind("RUN ", 0) == 0) run.settings = text.substr(4);
+    if (text.rfind("WORK ", 0) == 0) {
+      std::stringstream words(text.substr(5));
+      for (std::string w; words >> w;)
+        if (const auto eq = w.find('='); eq != std::string::npos) {
+          try {
+            run.work[w.substr(0, eq)] = std::stod(w.substr(eq + 1));
+          } catch (const std::logic_error&) {
+            throw std::runtime_error(folder + "/summary.txt: WORK " + w.substr(0, eq) + ": not a number: '" +
+                                     w.substr(eq + 1) + "'");
+          }
+        }
+    }
   }
   return run;
 }
@@ -159,6 +172,12 @@ struct RunStats {
   long solverCaps = 0;          ///< queries that ran out of iterations
   double maxPenetration = 0;    ///< deepest penetration at any frame's end (-1: not checked)
   long tunnelled = 0;           ///< pairs that went through each other unreported (-1: not checked)
+  double methodSeconds = 0;     ///< the method's wall time over all frames (the parts of Fig. 6)
+  double boundsSeconds = 0;     ///< of which the bounding volumes (the 14-DOP hierarchies)
+  double detectionSeconds = 0;  ///< of which collision detection (the time-of-impact queries)
+  double completeTests = -1;    ///< complete extrusion tests (summary.txt's WORK line; -1: not recorded)
+  double sdEvaluations = -1;    ///< supporting distances evaluated by the queries (-1: not recorded)
+  double kdopNodes = -1;        ///< nodes of the 14-DOP test trees visited (-1: not recorded)
 };
 
 /// The statistics of `run` (definitions at each field of RunStats).
@@ -177,6 +196,9 @@ inline RunStats statsOf(const Run& run) {
     if (k == 0 || collisions > s.peakCollisions) s.peakCollisions = collisions, s.ratioPeak = r, s.peakTime = t;
     wall += run.at("wall_s")[k];
     checks += run.at("checks_s")[k];
+    s.methodSeconds += run.methodSeconds(k);
+    s.boundsSeconds += run.at("bounds_s")[k];
+    s.detectionSeconds += run.at("collision_detection_s")[k];
     s.collisionChecks += long(run.at("collision_checks")[k]);
     s.brentQueries += long(run.at("brent_queries")[k]);
     s.brentIterations += long(run.at("brent_iterations")[k]);
@@ -196,6 +218,13 @@ inline RunStats statsOf(const Run& run) {
   s.checksShare = wall > 0 ? checks / wall : 0;
   s.brentMean = s.brentQueries > 0 ? double(s.brentIterations) / double(s.brentQueries) : 0;
   s.photoFinishRate = s.brentQueries > 0 ? double(s.photoFinishes) / double(s.brentQueries) : 0;
+  const auto work = [&](const char* key) {
+    const auto found = run.work.find(key);
+    return found == run.work.end() ? -1.0 : found->second;
+  };
+  s.completeTests = work("complete_tests");
+  s.sdEvaluations = work("sd_evaluations");
+  s.kdopNodes = work("kdop_nodes");
   return s;
 }
 
@@ -246,6 +275,15 @@ inline std::string statsTable(const std::vector<std::pair<std::string, Run>>& ru
         return format("%.3g (%.3g s", s.ratioPeak, s.peakTime) + format(", %.0f)", double(s.peakCollisions));
       },
       format("peak at t ≈ %.0f s; its value not given apart from the max", P::peakTime));
+  row("method wall time, s (of which bounding volumes; collision detection)",
+      [](const RunStats& s) {
+        return format("%.1f (", s.methodSeconds) + format("%.1f; %.1f)", s.boundsSeconds, s.detectionSeconds);
+      },
+      none);
+  const auto count = [](double n) { return n < 0 ? std::string("not recorded") : format("%.4g", n); };
+  row("complete extrusion tests; supporting distances evaluated",
+      [&](const RunStats& s) { return count(s.completeTests) + "; " + count(s.sdEvaluations); }, none);
+  row("14-DOP test-tree nodes visited", [&](const RunStats& s) { return count(s.kdopNodes); }, none);
   row("independent checks, share of wall time (not in the ratios)",
       [](const RunStats& s) { return format("%.1f%%", 100 * s.checksShare); }, "no such checks");
   row("time-of-impact queries (of which ran Brent)",

@@ -403,7 +403,7 @@ double speedBound(const WorldBody& body) {
 /// The time-of-impact query of piece pi of body P and piece pj of body Q in the scalar type S.
 template <typename S>
 ToiResult<double> query(const WorldBody& P, int pi, const WorldBody& Q, int pj, double t0, double t1,
-                        double tolerance, ExtrusionVariant variant) {
+                        double tolerance, const WorldSettings& world, ExtrusionCache<S>* coherence) {
   const Shape<S>* shapeP;
   const Shape<S>* shapeQ;
   if constexpr (std::is_same_v<S, float>) {
@@ -417,7 +417,8 @@ ToiResult<double> query(const WorldBody& P, int pi, const WorldBody& Q, int pj, 
   const Moving<Shape<S>> movingQ{*shapeQ, castMotion<S>(Q.path.motion)};
   ToiSettings<S> settings;
   settings.collisionTolerance = S(tolerance);
-  settings.variant = variant;
+  settings.variant = world.variant;
+  settings.warmStart = world.warmStarts;
   // The time of impact is needed to within the tolerance band, not to the solver's default
   // of sqrt(eps) of the interval (6e-10 s of a frame in double): a contact found where the
   // bodies are within 1.5 tolerances is as good to the impulse as one found at exactly one.
@@ -428,7 +429,7 @@ ToiResult<double> query(const WorldBody& P, int pi, const WorldBody& Q, int pj, 
   if (closing > 0)
     settings.timeTolerance = std::max(settings.timeTolerance,
                                       S(std::min(0.25, 0.5 * tolerance / (closing * (t1 - t0)))));
-  const ToiResult<S> r = timeOfImpact(movingP, movingQ, S(t0), S(t1), settings);
+  const ToiResult<S> r = timeOfImpact(movingP, movingQ, S(t0), S(t1), settings, nullptr, coherence);
   ToiResult<double> out;
   out.status = r.status;
   out.time = std::clamp(double(r.time), t0, t1);
@@ -496,6 +497,7 @@ std::vector<PiecePair> World::piecePairs(int i, int j, double t0, double t1, Fra
     if (!query) {
       BodyPairSettings<S> settings;
       settings.tolerance = S(scene_.collisionTolerance);
+      settings.frontTracking = settings_.frontTracking;
       if constexpr (std::is_same_v<S, float>) query = std::make_unique<BodyPairQuery<S>>(*A.bvhFloat, *B.bvhFloat, settings);
       else query = std::make_unique<BodyPairQuery<S>>(*A.bvh, *B.bvh, settings);
     }
@@ -535,14 +537,19 @@ bool World::checkPieces(int i, int pi, int j, int pj, double t0, double t1, Fram
     ToiResult<double> r;
     {
       PartTimer timer(frame.report.parts.collisionDetection);
+      const bool coherent = settings_.coherence && settings_.warmStarts;
+      const std::uint64_t key = piecePairKey(i, pi, j, pj);
       r = scene_.scalar == CollisionScalar::Float
-              ? query<float>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_.variant)
-              : query<double>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_.variant);
+              ? query<float>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_,
+                             coherent ? &coherenceFloat_[key] : nullptr)
+              : query<double>(bodies_[i], pi, bodies_[j], pj, t0, t1, scene_.collisionTolerance, settings_,
+                              coherent ? &coherenceDouble_[key] : nullptr);
     }
     ++c.collisionChecks;
     c.brentIterations += r.brentIterations;
     c.brentMax = std::max(c.brentMax, r.brentIterations);
     c.completeTests += r.gjkRuns;
+    c.sdEvaluations += r.sdEvaluations;
     if (settings_.trace) trace_.push_back({TraceEvent::Kind::Check, i, j, t0, t1});
     if (r.status == ToiStatus::Hit || r.status == ToiStatus::PhotoFinish ||
         (r.status == ToiStatus::IterationCap && r.brentIterations > 0))

@@ -119,6 +119,11 @@ struct ToiSettings {
   /// Run the query in the frame of P (see `timeOfImpact`); false runs it in world
   /// coordinates, for comparison only (the study's extreme cases show what that costs).
   bool inFrameOfP = true;
+  /// Start every complete extrusion test after the first where the last one ended (its GJK
+  /// simplex and its support hints, `ExtrusionCache`), and the first where the caller's
+  /// `coherence` cache says the last query ended; false runs each cold, to measure what the
+  /// warm starts buy. The verdicts are the same either way.
+  bool warmStart = true;
 };
 
 /// One Brent iterate of the solver, as chapter 05 draws it.
@@ -238,7 +243,8 @@ class ToiSolver {
   /// first step, the complete test over \f$[t_0, t_1]\f$, straight into `last_` (a test's
   /// result holds all its separating vectors: built in place, it is not copied).
   ToiSolver(const MovingP& P, const MovingQ& Q, S t0, S t1, const ToiSettings<S>& settings, ToiTrace<S>* trace,
-            const Vector3<S>& origin = Vector3<S>::Zero(), S clock = S(0))
+            const Vector3<S>& origin = Vector3<S>::Zero(), S clock = S(0),
+            const ExtrusionCache<S>* carried = nullptr)
       : origin_(origin),
         clock_(clock),
         P_(P),
@@ -252,6 +258,7 @@ class ToiSolver {
         accelerationQ_(S(Q.accelerationBound())),
         timeTolerance_(settings.timeTolerance * (t1 - t0)),
         extrusion_(extrusionSettings(settings)),
+        cache_(carried && settings.warmStart ? *carried : ExtrusionCache<S>{}),
         P1_(P.at(t1)),
         Q1_(Q.at(t1)),
         ta_(t0),
@@ -264,6 +271,10 @@ class ToiSolver {
   /// step at a time, until a step lands where the stored vectors still separate by the
   /// tolerance: there a complete test on \f$[t_x, t_1]\f$ gives a photo finish, a hit at
   /// \f$t_x\f$, or a restart at \f$t_x\f$.
+  /// Where the query's last complete test ended (its separating vector, GJK simplex and
+  /// hints): what the next query of the same pair may start from (`timeOfImpact`'s `coherence`).
+  const ExtrusionCache<S>& cache() const { return cache_; }
+
   ToiResult<S> solve() {
     if (last_.status != ExtrusionStatus::Undecided) return verdictOfFirstTest();
     for (;;) {  // one Brent run per interval [ta, t1]: the first, then one per restart
@@ -319,7 +330,8 @@ class ToiSolver {
   /// \f$t_1\f$ once for all tests. Each test after the first starts where the last one ended
   /// (`cache_`). Counts its work and records it in the trace.
   ExtrusionResult<S> completeTest(const PlacedP& Pa, const PlacedQ& Qa, S ta) {
-    ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1_, Q1_, margin(t1_ - ta), extrusion_, &cache_);
+    ExtrusionResult<S> test = extrusionTestPlaced(Pa, Qa, P1_, Q1_, margin(t1_ - ta), extrusion_,
+                                                      settings_.warmStart ? &cache_ : nullptr);
     ++result_.gjkRuns;
     result_.sdEvaluations += test.sdEvaluations;
     if (trace_) trace_->intervals.push_back({callerTime(ta), test.status, test.distanceAtStart, test.separating});
@@ -702,8 +714,17 @@ template <typename MovingP, typename MovingQ>
 ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
                                                  typename MovingP::Scalar t1,
                                                  const ToiSettings<typename MovingP::Scalar>& settings = {},
-                                                 ToiTrace<typename MovingP::Scalar>* trace = nullptr) {
+                                                 ToiTrace<typename MovingP::Scalar>* trace = nullptr,
+                                                 ExtrusionCache<typename MovingP::Scalar>* coherence = nullptr) {
   using S = typename MovingP::Scalar;
+  // Temporal coherence (§2: the work of the previous query reinitializes the current one):
+  // the first complete test starts where the pair's last query ended, and this query's end
+  // is kept for the next. A hint only: the verdicts are those of a cold start.
+  const auto run = [&](detail::ToiSolver<MovingP, MovingQ>&& solver) {
+    ToiResult<S> result = solver.solve();
+    if (coherence && settings.warmStart) *coherence = solver.cache();
+    return result;
+  };
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
   if constexpr (detail::CanTranslate<MovingP>::value && detail::CanTranslate<MovingQ>::value &&
@@ -714,12 +735,11 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
     if (origin.squaredNorm() > S(0) || clock != S(0)) {  // already there: nothing to change
       const MovingP localP = detail::localBody(P, Vector3<S>(-origin), clock);
       const MovingQ localQ = detail::localBody(Q, Vector3<S>(-origin), clock);
-      return detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0 - clock, t1 - clock, settings, trace, origin,
-                                                 clock)
-          .solve();
+      return run(detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0 - clock, t1 - clock, settings, trace, origin,
+                                                     clock, coherence));
     }
   }
-  return detail::ToiSolver<MovingP, MovingQ>(P, Q, t0, t1, settings, trace).solve();
+  return run(detail::ToiSolver<MovingP, MovingQ>(P, Q, t0, t1, settings, trace, Vector3<S>::Zero(), S(0), coherence));
 }
 
 }  // namespace gjkx

@@ -36,9 +36,11 @@
 #include <gjkx/timewarp/scene.hpp>
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace gjkx {
@@ -50,6 +52,16 @@ struct WorldSettings {
   /// The extrusion test of the solver: the paper's or the certified one (never misses
   /// under rotation; gjkx/extrusion/certified_margin.hpp). The default is certified.
   ExtrusionVariant variant = ExtrusionVariant::Certified;
+  /// Warm starts inside each time-of-impact query: every complete extrusion test after the
+  /// first starts from the last one's simplex and support hints (`ToiSettings::warmStart`).
+  bool warmStarts = true;
+  /// Temporal coherence between queries (§2): each convex piece pair's query starts where
+  /// the pair's last one ended (its separating vector, tried first, and GJK's simplex).
+  /// Needs `warmStarts`.
+  bool coherence = true;
+  /// Keep each body pair's 14-DOP front between frames (generalized front tracking, kdop's
+  /// `BodyPairQuery`); false traverses the hierarchies afresh at every query.
+  bool frontTracking = true;
   /// Run the independent checks (penetration at each frame's end, tunnelling by dense sampling).
   bool checks = true;
   /// Record what the orderings did, event by event (chapter 07 draws it).
@@ -73,6 +85,7 @@ struct FrameCounters {
   long solverCaps = 0;          ///< queries that ran out of iterations (treated as collisions)
   long piecePairs = 0;          ///< convex piece pairs of mesh bodies that the 14-DOP hierarchy handed to the solver
   long kdopNodes = 0;           ///< nodes of the hierarchies' test trees visited (kdop)
+  long sdEvaluations = 0;       ///< supporting distances evaluated by the time-of-impact queries (each a support pair)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported (by more than twice the tolerance, or a tolerance deeper than they started the frame)
 };
@@ -207,6 +220,14 @@ class World {
   std::map<long long, std::unique_ptr<BodyPairQuery<float>>> frontsFloat_;
   /// The same in double.
   std::map<long long, std::unique_ptr<BodyPairQuery<double>>> frontsDouble_;
+  /// Per convex piece pair, where its last time-of-impact query ended (WorldSettings::coherence).
+  std::unordered_map<std::uint64_t, ExtrusionCache<float>> coherenceFloat_;
+  /// The same in double.
+  std::unordered_map<std::uint64_t, ExtrusionCache<double>> coherenceDouble_;
+  /// The key of piece pi of body i and piece pj of body j in those maps.
+  std::uint64_t piecePairKey(int i, int pi, int j, int pj) const {
+    return (std::uint64_t(pairSlot(i, j)) << 32) | std::uint64_t(std::uint32_t(pi) * std::uint32_t(bodies_[j].pieces.size()) + std::uint32_t(pj));
+  }
   /// Per piece pair, the last reliable contact normal (see checkPieces), zero until one is seen.
   std::map<std::array<int, 4>, Eigen::Vector3d> pairNormal_;
   Eigen::Vector3d& knownNormal(int i, int pi, int j, int pj) {
