@@ -267,7 +267,7 @@ World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene),
     start.angularVelocity = spec.angularVelocity;
     // A static body is flown once, over the whole run: it is never integrated again.
     const double end = spec.isStatic ? double(frameCount_) / scene.frameRate : 0.0;
-    body.path = freeFlight(body.rigid, start, 0.0, end, scene.gravity);
+    body.setPath(freeFlight(body.rigid, start, 0.0, end, scene.gravity));
     bodies_.push_back(std::move(body));
   }
   // The checks' own view of every body: piece clouds and a sphere tree, made once rather
@@ -307,7 +307,7 @@ void World::fly(int b, double t0, double t1, FrameState& frame) {
   const BodyState state = renormalized(body.path.stateAt(t0));
   {
     PartTimer timer(frame.report.parts.integration);
-    body.path = flyChecked(body, state, t0, t1, body.gravity(scene_.gravity));
+    body.setPath(flyChecked(body, state, t0, t1, body.gravity(scene_.gravity)));
   }
   ++body.version;
   auto& pieces = frame.pieces[b];
@@ -413,8 +413,8 @@ ToiResult<double> query(const WorldBody& P, int pi, const WorldBody& Q, int pj, 
     shapeP = &P.pieces[pi];
     shapeQ = &Q.pieces[pj];
   }
-  const Moving<Shape<S>> movingP{*shapeP, castMotion<S>(P.path.motion)};
-  const Moving<Shape<S>> movingQ{*shapeQ, castMotion<S>(Q.path.motion)};
+  const Moving<Shape<S>> movingP{*shapeP, P.motionIn<S>()};
+  const Moving<Shape<S>> movingQ{*shapeQ, Q.motionIn<S>()};
   ToiSettings<S> settings;
   settings.collisionTolerance = S(tolerance);
   settings.variant = world.variant;
@@ -501,7 +501,7 @@ std::vector<PiecePair> World::piecePairs(int i, int j, double t0, double t1, Fra
       if constexpr (std::is_same_v<S, float>) query = std::make_unique<BodyPairQuery<S>>(*A.bvhFloat, *B.bvhFloat, settings);
       else query = std::make_unique<BodyPairQuery<S>>(*A.bvh, *B.bvh, settings);
     }
-    const BodyPairOutput<S> out = query->query(castMotion<S>(A.path.motion), castMotion<S>(B.path.motion), S(t0), S(t1));
+    const BodyPairOutput<S> out = query->query(A.template motionIn<S>(), B.template motionIn<S>(), S(t0), S(t1));
     frame.report.counters.kdopNodes += out.counters.nodesVisited;
     pairs = out.pairs;
   } else {
@@ -691,7 +691,7 @@ void World::resolve(const Hit& hit, FrameState& frame) {
     const double t1 = end - hit.time > 1e-3 / scene_.frameRate ? end : hit.time + 1e-3 / scene_.frameRate;
     {
       PartTimer timer(frame.report.parts.integration);
-      body.path = flyChecked(body, state, hit.time, t1, body.gravity(scene_.gravity));
+      body.setPath(flyChecked(body, state, hit.time, t1, body.gravity(scene_.gravity)));
     }
     ++body.version;
     auto& pieces = frame.pieces[b];
@@ -916,7 +916,7 @@ FrameReport World::step() {
         throw std::runtime_error(std::string(spin.what()) + " even in " + std::to_string(intervals) +
                                  " intervals of a frame; raise frame_rate");
       for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        bodies_[b].path = paths[b];
+        bodies_[b].setPath(paths[b]);
         bodies_[b].version = versions[b] + 1;  // events computed on the abandoned run are stale
         bodies_[b].asleep = asleep[b];
       }
