@@ -109,6 +109,13 @@ struct GjkCache {
 };
 
 namespace detail {
+/// True when every coordinate of v is finite: Eigen's `allFinite`, written out (speed: that
+/// call is not inlined, and GJK asks it of every support pair).
+template <typename S>
+bool isFinite(const Vector3<S>& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
 template <typename P, typename Q, typename S>
 SimplexVertex<S> supportPair(const P& shapeP, const Q& shapeQ, const Vector3<S>& s, SupportHint& hintP,
                              SupportHint& hintQ) {
@@ -124,6 +131,44 @@ SimplexVertex<S> supportPair(const P& shapeP, const Q& shapeQ, const Vector3<S>&
 }  // namespace detail
 
 namespace detail {
+/// The warm boolean query's first step, lean (§2.3 with §2.2's temporal coherence).
+///
+/// A boolean query stops at the first \f$\vec{s}_i\f$ whose supporting distance
+/// \f$SD(P,Q,\vec{s}_i)\f$ is above the threshold, and a warm query's \f$\vec{s}_0\f$ is the
+/// direction the last query ended on. While the bodies move little, the separating vector
+/// that ended the last query still separates them, and the first support pair is the
+/// whole query (about nine warm queries in ten in the study). This is the loop's first
+/// iteration for that case alone, with none of its bookkeeping (no simplex vertex, no
+/// closest point, no witnesses): two supports climbed from the remembered hints and one
+/// supporting distance, in the loop's own arithmetic, so its answer is the loop's.
+///
+/// Returns true when \f$SD(P,Q,\vec{s}_0)\f$ is finite and above `threshold`, with `result`
+/// and `cache` as the loop leaves them at that exit (status `SeparatingVector`, one
+/// iteration, an empty simplex). Returns false, having written nothing, otherwise: the
+/// loop then runs the query from its start (a non-finite support point included, which
+/// makes SD non-finite and is reported by the loop).
+template <typename ShapeP, typename ShapeQ, typename S>
+bool separatedAlongCachedDirection(const ShapeP& P, const ShapeQ& Q, const Vector3<S>& s, S threshold, GjkCache<S>& cache,
+                                   GjkResult<S>& result) {
+  SupportHint hintP = cache.hintP, hintQ = cache.hintQ;
+  const Vector3<S> p = supportFrom(P, s, hintP);
+  const Vector3<S> q = supportFrom(Q, Vector3<S>(-s), hintQ);
+  // SD(P, Q, s) = s . S_Q(-s) - s . S_P(s), for a unit s (§2.3), as in the loop.
+  const S sNorm = s.norm();
+  const S sd = s.dot(Vector3<S>(q - p)) / sNorm;
+  if (!(sd > threshold) || !std::isfinite(sd)) return false;
+  result.status = GjkStatus::SeparatingVector;
+  result.iterations = 1;
+  result.lowerBound = sd;
+  result.separatingVector = s / sNorm;
+  cache.simplex.size = 0;  // the loop's simplex at this exit is empty
+  cache.simplex.z = Vector3<S>::Zero();
+  cache.direction = s;
+  cache.hintP = hintP;
+  cache.hintQ = hintQ;
+  return true;
+}
+
 /// The GJK loop itself (`gjk` without the rounded-shape dispatch).
 template <typename ShapeP, typename ShapeQ, typename Visitor>
 GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, const GjkSettings<typename ShapeP::Scalar>& settings,
@@ -147,7 +192,16 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
   } else {
     s = Q.center() - P.center();  // s_0: from P towards Q
   }
-  if (!(s.squaredNorm() > S(0)) || !s.allFinite()) s = Vector3<S>::UnitX();  // any nonzero vector will do
+  if (!(s.squaredNorm() > S(0)) || !isFinite(s)) s = Vector3<S>::UnitX();  // any nonzero vector will do
+
+  // A warm boolean query ends, most often, at its first support pair (see above).
+  if constexpr (!visiting) {
+    if (cache && cache->valid) {
+      if (settings.separationThreshold < std::numeric_limits<S>::infinity() &&
+          separatedAlongCachedDirection(P, Q, s, settings.separationThreshold, *cache, result))
+        return result;
+    }
+  }
 
   S md = std::numeric_limits<S>::infinity();  // Minkowski distance |z| of the current simplex
   Vector3<S> z = Vector3<S>::Zero();
@@ -204,7 +258,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
   for (int i = 0; i < settings.maxIterations; ++i) {
     result.iterations = i + 1;
     const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
-    if (!v.w.allFinite()) {
+    if (!isFinite(v.w)) {
       finish(GjkStatus::NumericalFailure);
       return result;
     }
@@ -230,7 +284,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
         const SimplexVertex<S>& old = cache->simplex.vertices[k];
         SupportHint hp = old.hintP, hq = old.hintQ;
         const SimplexVertex<S> again = detail::supportPair(P, Q, old.s, hp, hq);
-        if (!again.w.allFinite()) {
+        if (!isFinite(again.w)) {
           finish(GjkStatus::NumericalFailure);
           return result;
         }
