@@ -143,10 +143,6 @@ class Polytope {
     return out;
   }
 
-  // Neighbour values a SIMD register holds (two doubles or four floats), for the climb's scan.
-  using Lanes = Eigen::Array<S, 16 / sizeof(S), 1>;
-  static constexpr int kLanes = Lanes::SizeAtCompileTime;
-
   int climb(const Vector3<S>& s, int start, std::vector<int>* path) const {
     const Data& d = *data_;
     int v = (start >= 0 && start < vertexCount()) ? start : 0;
@@ -160,35 +156,18 @@ class Polytope {
     const S sx = s.x(), sy = s.y(), sz = s.z();
     // Every value by the one expression below, so that a vertex has one value wherever it is read.
     S best = sx * d.centred[v].x() + sy * d.centred[v].y() + sz * d.centred[v].z();
-    const S* ringX = d.ringX.data();
-    const S* ringY = d.ringY.data();
-    const S* ringZ = d.ringZ.data();
-    auto ringValue = [&](int k) { return sx * ringX[k] + sy * ringY[k] + sz * ringZ[k]; };  // s · (neighbour k - c)
     if (path) path->push_back(v);
     for (;;) {
+      int bestK = -1;
       const int end = d.firstNeighbour[v + 1];
-      // Is any neighbour better? At the top, where a warm start's climb usually begins, this
-      // scan is the whole step. It compares every neighbour with the same fixed value, so
-      // it takes them a register's worth at a time (speed: Eigen evaluates `Lanes` as one
-      // SIMD packet, the same products and sums per neighbour as `ringValue`), then finds
-      // the first better one, if any, one by one.
-      int k = d.firstNeighbour[v];
-      for (; k + kLanes <= end; k += kLanes) {
-        const Lanes values = sx * Lanes::Map(ringX + k) + sy * Lanes::Map(ringY + k) + sz * Lanes::Map(ringZ + k);
-        if ((values > best).any()) break;
-      }
-      while (k < end && !(ringValue(k) > best)) ++k;
-      if (k == end) return v;  // no neighbour is better: a local, hence global, maximum
-      // Steepest ascent: the best neighbour, the first of equals (the ones before k are no better).
-      int bestK = k;
-      best = ringValue(k);
-      for (++k; k < end; ++k) {
-        const S value = ringValue(k);
+      for (int k = d.firstNeighbour[v]; k < end; ++k) {
+        const S value = sx * d.ringX[k] + sy * d.ringY[k] + sz * d.ringZ[k];  // s · (neighbour - c)
         if (value > best) {
           best = value;
           bestK = k;
         }
       }
+      if (bestK < 0) return v;  // no neighbour is better: a local, hence global, maximum
       v = d.neighbours[bestK];
       if (path) path->push_back(v);
     }
