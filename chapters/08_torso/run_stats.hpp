@@ -281,8 +281,14 @@ inline std::string statsTable(const std::vector<std::pair<std::string, Run>>& ru
       },
       none);
   const auto count = [](double n) { return n < 0 ? std::string("not recorded") : format("%.4g", n); };
-  row("complete extrusion tests; supporting distances evaluated",
-      [&](const RunStats& s) { return count(s.completeTests) + "; " + count(s.sdEvaluations); }, none);
+  row("complete extrusion tests; supporting distances evaluated (per query)",
+      [&](const RunStats& s) {
+        return count(s.completeTests) + "; " + count(s.sdEvaluations) +
+               (s.sdEvaluations < 0 || s.collisionChecks == 0
+                    ? std::string()
+                    : format(" (%.3g)", s.sdEvaluations / double(s.collisionChecks)));
+      },
+      none);
   row("14-DOP test-tree nodes visited", [&](const RunStats& s) { return count(s.kdopNodes); }, none);
   row("independent checks, share of wall time (not in the ratios)",
       [](const RunStats& s) { return format("%.1f%%", 100 * s.checksShare); }, "no such checks");
