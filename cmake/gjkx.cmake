@@ -85,7 +85,7 @@ function(gjkx_test stage concept)
   add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${stage}/test_${concept}.cpp)
   target_link_libraries(${name} PRIVATE gjkx::${stage} gjkx_catch_main ${ARG_LINKS})
   gjkx_warnings(${name})
-  catch_discover_tests(${name} TEST_PREFIX "${stage}/" PROPERTIES LABELS ${stage})
+  catch_discover_tests(${name} EXTRA_ARGS --warn NoTests TEST_PREFIX "${stage}/" PROPERTIES LABELS ${stage})
 endfunction()
 
 # Says, at the end of configuration, which chapters a build without the renderer left out.

@@ -136,7 +136,7 @@ TEST_CASE("k-DOP extrusion test: the certified variant keeps a pair a fast turn 
   CHECK(kdopExtrusionTest(p, p, q, q, 1.0, 0.0, 0.0, ExtrusionVariant::Certified).separated);
 }
 
-TEST_CASE("a BVH of one piece is a leaf; an empty one is refused", "[kdop]") {
+TEST_CASE("a BVH of one piece is a leaf, an empty one is refused", "[kdop]") {
   const auto tetra = Polytope<double>::hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
   const Bvh<double> one({tetra});
   CHECK(one.nodes().size() == 1);

@@ -64,7 +64,7 @@ TEST_CASE("the L prism: pieces cover the surface, each a polytope whose hill cli
     }
 }
 
-TEST_CASE("the cache: a second run reads the same pieces; another setting is another key", "[mesh]") {
+TEST_CASE("the cache: a second run reads the same pieces, another setting is another key", "[mesh]") {
   const TriangleMesh mesh = readMesh(kData + "/l_prism.off", {true});
   const std::string dir = freshCacheDir("l-prism");
   const auto first = decompose(mesh, {}, dir);

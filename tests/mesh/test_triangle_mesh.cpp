@@ -62,7 +62,7 @@ TEST_CASE("a face index out of range is refused, in OBJ and in OFF (whose reader
   }
 }
 
-TEST_CASE("an open box is refused where closure is required, naming an open edge; accepted where it is not", "[mesh]") {
+TEST_CASE("an open box is refused where closure is required, naming an open edge, and accepted where it is not", "[mesh]") {
   CHECK_THROWS_WITH(readMesh(data("open_box.off"), {true}),
                     Catch::Contains("open_box.off") && Catch::Contains("not closed") && Catch::Contains("edge"));
   CHECK(readMesh(data("open_box.off"), {false}).triangles.size() == 10);
