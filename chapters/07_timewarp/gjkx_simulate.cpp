@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
   long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
-  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0;
+  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0;
   int brentMax = 0, tunnelled = 0;
   double maxPenetration = 0, wall = 0;
   try {
@@ -116,6 +116,7 @@ int main(int argc, char** argv) {
       sdEvaluations += c.sdEvaluations;
       piecePairs += c.piecePairs;
       kdopNodes += c.kdopNodes;
+      settled += c.settled;
       brentMax = std::max(brentMax, c.brentMax);
       tunnelled += c.tunnelled;
       maxPenetration = std::max(maxPenetration, c.maxPenetration);
@@ -165,6 +166,6 @@ int main(int argc, char** argv) {
   // The work done, in counts that do not depend on the machine's load: what a change to the
   // solver or the hierarchy buys shows here even where wall times are noisy.
   summary << "WORK complete_tests=" << completeTests << " sd_evaluations=" << sdEvaluations
-          << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << "\n";
+          << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << " settled=" << settled << "\n";
   return 0;
 }

@@ -77,6 +77,7 @@ struct FrameCounters {
   long collisions = 0;          ///< impulses applied (microcollisions included)
   long microcollisions = 0;     ///< of which microcollisions
   long caught = 0;              ///< microcollisions that stopped a caught body (one struck more than 32 times in the frame: Zeno's wedge; World::resolve)
+  long settled = 0;             ///< bodies put to sleep at the frame's end, their kinetic energy too small to leave the tolerance band (World::settle)
   long rollbacks = 0;           ///< collisions that rolled back bodies whose local time had run past t_c
   long bodiesRolledBack = 0;    ///< bodies rolled back (or, for the heap, advanced to the impact)
   long brentQueries = 0;        ///< queries whose first extrusion test failed, so that Brent ran (§5)
@@ -146,10 +147,14 @@ struct WorldBody {
   FreeFlight path;                  ///< its path from its last event to its local time `path.t1` (set it with setPath)
   Motion<float> motionFloat;        ///< `path`'s motion in float, made once per path (collision detection in float reads it at every query)
   int version = 0;                  ///< bumped when its path changes: events that used the old one are stale
-  /// Caught at rest against a static body (World::resolve) and not struck since: it is held
-  /// where it stands, gravity off, and its pairs with static and sleeping bodies are not
-  /// looked at, until a collision with a moving body wakes it.
+  /// Caught at rest against a static body (World::resolve), or settled at a frame's end
+  /// with too little kinetic energy to leave the tolerance band (World::settle), and not
+  /// struck since: it is held where it stands, gravity off, and its pairs with static and
+  /// sleeping bodies are not looked at, until a collision with a moving body wakes it.
   bool asleep = false;
+  /// How long (simulated s) it has been too slow to leave the tolerance band and struck by
+  /// nothing but resting or slow bodies (World::settle); it settles after half a second.
+  double slowFor = 0;
   /// The gravity its path feels: none while it sleeps.
   Eigen::Vector3d gravity(const Eigen::Vector3d& sceneGravity) const {
     return asleep ? Eigen::Vector3d::Zero() : sceneGravity;
@@ -218,6 +223,7 @@ class World {
   void runToiHeap(double T0, double T1, FrameState& frame);
   void runFixedStep(double T0, double T1, FrameState& frame);
   void runChecks(double T0, double T1, FrameState& frame);
+  void settle(double T1, FrameState& frame);
   double speedBound(int body, const FrameState& frame) const;
 
   Scene scene_;
