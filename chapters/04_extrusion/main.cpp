@@ -224,7 +224,7 @@ Color linkColour(const Link& link) { return timeColour(0.5 * (link.from + link.t
 // The colour of a Brent step kind, in the order of BrentStepKind, as in chapter 05's figures.
 Color kindColour(BrentStepKind kind) {
   static const Color colors[] = {Color::hex(0x9E9E9E), palette::ink, palette::highlight, Color::hex(0xCC79A7),
-                                 Color::hex(0x009E73)};
+                                 Color::hex(0x009E73), Color::hex(0xD55E00)};
   return colors[static_cast<int>(kind)];
 }
 const char* kindName(BrentStepKind kind) {
@@ -234,6 +234,7 @@ const char* kindName(BrentStepKind kind) {
     case BrentStepKind::InverseQuadratic: return "inverse quadratic";
     case BrentStepKind::MinimalStep: return "minimal step";
     case BrentStepKind::Leap: return "leap";
+    case BrentStepKind::DistanceSecant: return "distance secant";
   }
   return "?";
 }

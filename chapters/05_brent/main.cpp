@@ -55,7 +55,7 @@ Color intervalColor(std::size_t k) {
 }
 Color kindColor(BrentStepKind kind) {  // in the order of BrentStepKind
   static const Color colors[] = {Color::hex(0x9E9E9E), palette::ink, palette::highlight, Color::hex(0xCC79A7),
-                                 Color::hex(0x009E73)};
+                                 Color::hex(0x009E73), Color::hex(0xD55E00)};
   return colors[static_cast<int>(kind)];
 }
 
@@ -192,7 +192,8 @@ void legend(Canvas& canvas, double x, double y, const std::vector<std::pair<Colo
     y += 17;
   }
 }
-// The step kinds' colours; the solver's leap (not one of Brent's rules) only where `run` took one.
+// The step kinds' colours; the solver's own steps (its leap, its probe at the distance secant:
+// not Brent's rules) only where `run` took one.
 void kindLegend(Canvas& canvas, double x, double y, const Run* run = nullptr) {
   std::vector<std::pair<Color, std::string>> items{
       {kindColor(BrentStepKind::Bisection), "bisection"}, {kindColor(BrentStepKind::Secant), "secant"},
@@ -201,6 +202,9 @@ void kindLegend(Canvas& canvas, double x, double y, const Run* run = nullptr) {
   if (run && std::any_of(run->trace.steps.begin(), run->trace.steps.end(),
                          [](const ToiStep<double>& step) { return step.kind == BrentStepKind::Leap; }))
     items.push_back({kindColor(BrentStepKind::Leap), "leap (the solver's own)"});
+  if (run && std::any_of(run->trace.steps.begin(), run->trace.steps.end(),
+                         [](const ToiStep<double>& step) { return step.kind == BrentStepKind::DistanceSecant; }))
+    items.push_back({kindColor(BrentStepKind::DistanceSecant), "probe (the solver's own)"});
   legend(canvas, x, y, items, true);
 }
 void lineLegend(Canvas& canvas, double x, double y) {
@@ -291,8 +295,11 @@ void traceTables(Canvas& canvas, double x, double y, const Run& run) {
     std::string then = "< tol: Brent goes on";
     for (const auto& test : run.trace.intervals)
       if (test.start == step.t && test.start > 0)
-        then = (step.completeTest ? "\u2265 tol: complete test \u2192 " : "converged: test at t_b \u2192 ") +
-               std::string(toString(test.status));
+        then = step.kind == BrentStepKind::DistanceSecant
+                   ? "probe: test \u2192 " + std::string(toString(test.status)) +
+                         (step.completeTest ? ", proven" : ", far end")
+                   : (step.completeTest ? "\u2265 tol: complete test \u2192 " : "converged: test at t_b \u2192 ") +
+                         std::string(toString(test.status));
     steps.push_back({std::to_string(i + 1), format("%.6f", step.t), toString(step.kind),
                      format("%.4f", step.approximateMaxSd), then});
   }

@@ -2,6 +2,7 @@
 // loops, so that an instruction count under callgrind is repeatable and per query.
 //
 //   toi_profile [--method ours|certified|fcl_ca|bullet|box2d] [--workload NAME]... [--queries N] [--repeat N] [--tol T]
+//               [--steps] [--dump N]
 //
 // Builds the quick workloads of workloads.hpp (40 queries each unless --queries), then runs
 // the chosen method `--repeat` times (default 1) on every query of the chosen workloads
@@ -24,6 +25,12 @@
 // iteration and every supporting distance of a stored vector). Instructions per query
 // divided by evaluations per query, for each, splits the gap to Box2D into "how many
 // evaluations" and "what one evaluation costs" (a 3D solver in the plane against a 2D one).
+//
+// `--steps` (ours) adds a STEPS line per workload from one more, traced, run of each query
+// (outside the counting): where the Brent iterations go, by the rule that chose them
+// (bisection, secant, inverse quadratic, minimal step, leap, advance) and by what followed
+// (complete tests, i.e. restarts), and how the queries ended. `--dump N` prints the trace
+// of query N of each workload chosen, one line per iterate and per complete test.
 #include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
@@ -53,6 +60,8 @@ struct Options {
   int queries = 40;
   int repeat = 1;
   double tol = 1e-7;
+  bool steps = false;
+  int dump = -1;
 };
 
 Options parse(int argc, char** argv) {
@@ -65,6 +74,8 @@ Options parse(int argc, char** argv) {
   app.add_option("--queries", o.queries, "queries per workload")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--repeat", o.repeat, "calls per query")->type_name("N")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--tol", o.tol, "collision tolerance of ours")->type_name("T")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_flag("--steps", o.steps, "ours: where the Brent iterations go (one more traced run per query)");
+  app.add_option("--dump", o.dump, "ours: print the trace of this query of each workload")->type_name("N");
   chapter::parseOrExit(app, argc, argv);
   return o;
 }
@@ -72,7 +83,33 @@ Options parse(int argc, char** argv) {
 // Counters of ours over a workload.
 struct Counts {
   long long gjkRuns = 0, brentIterations = 0, restarts = 0, sdEvaluations = 0;
+  long long byKind[6] = {};          // Brent iterates by BrentStepKind
+  long long separatingIterates = 0;  // iterates where the stored vectors separated: a complete test followed
+  long long byStatus[7] = {};        // queries by ToiStatus
+  int worstIterations = 0;
 };
+
+// The traced run of `--steps` and `--dump`: adds to the STEPS counters, prints query `index` if dumped.
+template <typename P, typename Q>
+void traceOurs(const P& Pm, const Q& Qm, const ToiSettings<double>& settings, int index, const Options& o, Counts& counts) {
+  ToiTrace<double> trace;
+  const ToiResult<double> r = timeOfImpact(Pm, Qm, 0.0, 1.0, settings, &trace);
+  for (const ToiStep<double>& step : trace.steps) {
+    ++counts.byKind[int(step.kind)];
+    counts.separatingIterates += step.completeTest;
+  }
+  ++counts.byStatus[int(r.status)];
+  counts.worstIterations = std::max(counts.worstIterations, r.brentIterations);
+  if (index != o.dump) return;
+  std::printf("DUMP query=%d status=%s time=%.17g distance=%.3g brent_iterations=%d restarts=%d sd_evaluations=%d\n", index,
+              toString(r.status), r.time, r.distance, r.brentIterations, r.restarts, r.sdEvaluations);
+  for (const ToiStep<double>& step : trace.steps)
+    std::printf("  step  t=%.17g F=%.6g bracket=[%.17g, %.17g] %s%s\n", step.t, step.approximateMaxSd - settings.collisionTolerance,
+                step.bracketLow, step.bracketHigh, toString(step.kind), step.completeTest ? " separates" : "");
+  for (const ToiInterval<double>& test : trace.intervals)
+    std::printf("  test  ta=%.17g distance=%.6g status=%s vectors=%d\n", test.start, test.distanceAtStart,
+                toString(test.status), test.separating.count);
+}
 
 #if GJKX_HAVE_BOX2D
 }  // namespace
@@ -94,7 +131,7 @@ auto profiled(int repeat, Run run) {
 }
 
 // One run of ours (double), keeping the solver's own counters.
-comparison::Outcome runOurs(const comparison::Prepared<double>& p, const Options& o, Counts& counts) {
+comparison::Outcome runOurs(const comparison::Prepared<double>& p, const Options& o, Counts& counts, int index) {
   return std::visit(
       [&](const auto& a, const auto& b) {
         const auto P = moving(a, p.mp);
@@ -106,6 +143,7 @@ comparison::Outcome runOurs(const comparison::Prepared<double>& p, const Options
         counts.brentIterations += r.brentIterations;
         counts.restarts += r.restarts;
         counts.sdEvaluations += r.sdEvaluations;
+        if (o.steps || o.dump >= 0) traceOurs(P, Q, settings, index, o, counts);
         return comparison::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
       },
       p.P, p.Q);
@@ -131,6 +169,7 @@ int main(int argc, char** argv) {
 #if GJKX_HAVE_BOX2D
     b2_gjkCalls = b2_gjkIters = b2_toiCalls = b2_toiIters = b2_toiRootIters = 0;
 #endif
+    int index = 0;
     for (const ToiQuery& q : w.queries) {
       comparison::Outcome out;
       // A peer's query object, run `repeat` times under the profiler.
@@ -141,7 +180,7 @@ int main(int argc, char** argv) {
       (void)runPeer;  // (unused when no peer was found at build time)
       if (ours) {
         const comparison::Prepared<double> p(q);
-        out = runOurs(p, o, counts);
+        out = runOurs(p, o, counts, index);
       } else if (o.method == "fcl_ca") {
 #if GJKX_HAVE_FCL
         const peers::FclQuery fcl(q);
@@ -166,6 +205,7 @@ int main(int argc, char** argv) {
         return 1;
 #endif
       }
+      ++index;
       hits += out.hit;
       misses += q.refHit && !out.hit;
       falseAlarms += q.clearMiss && out.hit;
@@ -182,6 +222,15 @@ int main(int argc, char** argv) {
                   b2_gjkIters / n / o.repeat, b2_toiIters / n / o.repeat, b2_toiRootIters / n / o.repeat);
 #endif
     std::printf("\n");
+    if (ours && o.steps) {
+      std::printf("STEPS method=%s workload=%s", o.method.c_str(), w.name.c_str());
+      for (int k = 0; k < 6; ++k)
+        if (counts.byKind[k]) std::printf(" %s=%.2f", toString(BrentStepKind(k)), counts.byKind[k] / n);
+      std::printf(" separating_iterates=%.2f worst_iterations=%d ends:", counts.separatingIterates / n, counts.worstIterations);
+      for (int k = 0; k < 7; ++k)
+        if (counts.byStatus[k]) std::printf(" %s=%lld", toString(ToiStatus(k)), counts.byStatus[k]);
+      std::printf("\n");
+    }
   }
   if (!any) {
     std::fprintf(stderr, "toi_profile: no workload matched for this method\n");

@@ -37,6 +37,7 @@ enum class BrentStepKind {
   InverseQuadratic,        ///< inverse quadratic interpolation through a, b and c
   MinimalStep,             ///< the interpolated step was below the tolerance: step by the tolerance
   Leap,                    ///< not Brent's own: the time-of-impact solver's leap past a creeping restart (time_of_impact.hpp)
+  DistanceSecant,          ///< not Brent's own: the time-of-impact solver's probe where the exact distances extrapolate to the tolerance (time_of_impact.hpp)
 };
 
 /// The name of a step kind, for traces.
@@ -47,6 +48,7 @@ inline const char* toString(BrentStepKind kind) {
     case BrentStepKind::InverseQuadratic: return "inverse-quadratic";
     case BrentStepKind::MinimalStep: return "minimal-step";
     case BrentStepKind::Leap: return "leap";
+    case BrentStepKind::DistanceSecant: return "distance-secant";
   }
   return "?";
 }

@@ -45,13 +45,39 @@
 /// reported time is one at which the bodies do not interpenetrate, and no later than the
 /// first time they come within the tolerance (plus the time tolerance).
 ///
-/// Three things beyond the paper make a query cheaper without changing what it proves:
+/// Four things beyond the paper make a query cheaper without changing what it proves:
 /// each complete test after the first starts GJK from the last one's simplex (an
 /// `ExtrusionCache`); each stored vector keeps where its support searches ended (its
-/// hill-climbing hints); and after a restart the bracket's far end is the nearest known
-/// point where the new vectors are below the tolerance (the last bracket's, or where the
-/// distances of the last two complete tests extrapolate to it), so that Brent does not
-/// creep towards a far t1 one restart at a time.
+/// hill-climbing hints); after a restart the bracket's far end is the nearest known point
+/// where the new vectors are below the tolerance (the last bracket's), so that Brent does
+/// not creep towards a far t1 one restart at a time; and after a restart a *probe* goes
+/// straight to where the exact distances extrapolate to the tolerance (below).
+///
+/// Why the restarts creep when the bodies turn ("Brent creep"). Let d(t) be the exact
+/// distance and \f$\vec{s}_a\f$ the closest direction at \f$t_a\f$. SD along the fixed
+/// \f$\vec{s}_a\f$ equals d at \f$t_a\f$ but falls faster than d as the bodies turn: the closest
+/// features swing away from it. Near the contact, to first order,
+/// \f[ d(t) \approx d_a - v\,(t - t_a), \qquad SD(t, \vec{s}_a) \approx d_a - (v + u)(t - t_a), \f]
+/// with u > 0 what the turning adds along \f$\vec{s}_a\f$ (about \f$\omega r\f$, r the lever of
+/// the closest feature). F's root is then \f$t_x = t_a + (d_a - \mathrm{tol})/(v + u)\f$, where the
+/// distance is still \f$\mathrm{tol} + (d_a - \mathrm{tol})\,u/(v + u)\f$: however well Brent solves
+/// F, each restart shrinks the gap to the contact only by the constant factor u/(v + u).
+/// Linear convergence, not superlinear (planar_2d, 2D polygons spinning up to 3 rad: about
+/// 0.57 a restart, up to 30 restarts and 98 iterations for one query).
+///
+/// The probe. After a restart the solver knows the exact distance at two times: \f$d_b\f$ at
+/// the last test's start \f$t_b\f$ and \f$d_a\f$ at \f$t_a\f$. The secant through them reaches
+/// the tolerance at
+/// \f[ t_S = t_a + (d_a - \mathrm{tol})\,\frac{t_a - t_b}{d_b - d_a}, \f]
+/// the secant method on d - tol itself, which converges superlinearly where d is smooth.
+/// A complete test on \f$[t_S, t_1]\f$ gives the exact distance at \f$t_S\f$ and stores the
+/// vectors found there; each is then checked back at \f$t_a\f$. A vector that separates by the
+/// tolerance at both \f$t_a\f$ and \f$t_S\f$ proves \f$[t_a, t_S]\f$ free of contact just as a
+/// vector stored at \f$t_a\f$ does: §3's test asks a vector to separate at both ends of the
+/// interval, whichever end it was found at (the same chord, and for the certified variant
+/// the same margin). The closest direction at \f$t_S\f$ has turned with the bodies, so it
+/// proves the interval the vectors from \f$t_a\f$ could not. Proven, the probe is a restart at
+/// \f$t_S\f$ (or a photo finish, or a hit); not proven, it is a nearer far end for Brent.
 #pragma once
 
 #include <optional>
@@ -131,7 +157,8 @@ template <typename S>
 struct ToiStep {
   /// The iterate \f$t_x\f$.
   S t = S(0);
-  /// The approximate maximum supporting distance at \f$t_x\f$ from the stored vectors (less the margin).
+  /// The approximate maximum supporting distance at \f$t_x\f$ from the stored vectors (less the
+  /// margin); for a probe (`DistanceSecant`), the best proof of \f$[t_a, t_x]\f$ it found.
   S approximateMaxSd = S(0);
   /// The low end \f$t_a\f$ of the bracket the iterate was taken in: the last time proven free of contact.
   S bracketLow = S(0);
@@ -139,7 +166,9 @@ struct ToiStep {
   S bracketHigh = S(0);
   /// The rule that chose \f$t_x\f$.
   BrentStepKind kind = BrentStepKind::Bisection;
-  /// True when the approximate maximum was at least the tolerance and a complete extrusion test followed.
+  /// True when the approximate maximum was at least the tolerance and a complete extrusion test
+  /// followed; for a probe (which always runs its complete test first), when it proved
+  /// \f$[t_a, t_x]\f$ free.
   bool completeTest = false;
 };
 
@@ -264,7 +293,8 @@ class ToiSolver {
         ta_(t0),
         last_(completeTest(P.at(t0), Q.at(t0), t0)),
         previousHigh_(t1),
-        taBefore_(t0) {}
+        taBefore_(t0),
+        taBefore2_(t0) {}
 
   /// §5 from start to end: the complete test over \f$[t_0, t_1]\f$ (run on construction);
   /// if it fails, Brent's method on F over \f$[t_a, t_1]\f$ (first \f$t_a = t_0\f$), one Brent
@@ -279,8 +309,11 @@ class ToiSolver {
     if (last_.status != ExtrusionStatus::Undecided) return verdictOfFirstTest();
     for (;;) {  // one Brent run per interval [ta, t1]: the first, then one per restart
       if (last_.separating.count == 0) return hit(ta_, last_);
+      ProbeOutcome probed = probe();  // after a restart: straight to where the distance reaches the tolerance
+      if (probed.verdict) return *probed.verdict;
+      if (probed.restarted) continue;
       std::optional<BrentIterate> leap;
-      BrentStepper<S> brent = bracket(leap);
+      BrentStepper<S> brent = bracket(leap, probed);
       for (;;) {
         if (brent.converged()) return hitOnConvergedBracket(brent);
         if (result_.brentIterations >= settings_.maxIterations) return iterationCap();
@@ -310,6 +343,20 @@ class ToiSolver {
     S approximateMaxSd = S(0);
     /// True when it is at least the tolerance (\f$F(t_x) \ge 0\f$): \f$[t_a, t_x]\f$ is free of contact.
     bool separates = false;
+  };
+
+  /// What a probe at the distance secant decided (see `probe`).
+  struct ProbeOutcome {
+    /// The query's verdict, when the probe reached one (a photo finish or a hit at \f$t_S\f$).
+    std::optional<ToiResult<S>> verdict;
+    /// True when \f$[t_a, t_S]\f$ was proven free and the solver moved its start to \f$t_S\f$.
+    bool restarted = false;
+    /// True when \f$t_S\f$ was not proven free: it is then a far end for Brent, F < 0 there.
+    bool farEnd = false;
+    /// \f$t_S\f$.
+    S t = S(0);
+    /// F at \f$t_S\f$ (from the vectors stored at \f$t_a\f$), when `farEnd`.
+    S f = S(0);
   };
 
   /// The settings of every complete test: the solver's tolerance and variant, and its GJK settings.
@@ -412,12 +459,8 @@ class ToiSolver {
   /// F bends away from the chord (accelerating or turning bodies: each secant lands short, F
   /// is above the tolerance there, and every restart costs a complete test). So the far end
   /// is the nearest of these where the new vectors are below the tolerance:
-  /// - the last bracket's far end;
-  /// - after a restart at an iterate where F was well above zero (the secant landed short:
-  ///   the creep above), where the exact distances of the last two complete tests
-  ///   extrapolate to the tolerance (a secant on the distance). The distance bends towards
-  ///   contact there, so this lies past the contact, where F < 0. (Where the restart came at
-  ///   F's root, as under linear motion, it would lie short: not tried.)
+  /// - the probe's \f$t_S\f$ (`probed`), when it was not proven free;
+  /// - the last bracket's far end.
   ///
   /// A secant can also creep towards a near miss: where the distance has a minimum just
   /// above the tolerance (two resting bodies that rock, a grazing pass), F has no root, and
@@ -428,13 +471,14 @@ class ToiSolver {
   /// is an iterate like any other (proven free of contact, a complete test follows), and
   /// the advances double until they pass the minimum; where they do not, the leap is the
   /// bracket's far end, and Brent works on a bracket that short.
-  BrentStepper<S> bracket(std::optional<BrentIterate>& leap) {
+  BrentStepper<S> bracket(std::optional<BrentIterate>& leap, const ProbeOutcome& probed) {
     const S distanceAtTa = last_.distanceAtStart;
     S high = t1_, fHigh = std::min(approximateMaxSdAtT1() - tol_, S(0));
+    if (probed.farEnd && probed.t < high) {
+      high = probed.t;
+      fHigh = probed.f;
+    }
     tryNearerFarEnd(previousHigh_, high, fHigh);
-    if (creeping_ && distanceBefore_ > distanceAtTa)
-      tryNearerFarEnd(ta_ + (distanceAtTa - tol_) * ((ta_ - taBefore_) / (distanceBefore_ - distanceAtTa)), high,
-                      fHigh);
     const S advance = ta_ - taBefore_;
     if (result_.restarts > 0 && advance < S(0.25) * (high - ta_) && result_.brentIterations < settings_.maxIterations) {
       BrentIterate x = iterateAt(ta_ + 2 * advance, BrentStepKind::Leap, ta_, high);
@@ -457,6 +501,115 @@ class ToiSolver {
       high = t;
       fHigh = f;
     }
+  }
+
+  /// The probe (see the file comment): after a restart, a complete test on \f$[t_S, t_1]\f$ at
+  /// the time \f$t_S\f$ where the exact distances of the last two complete tests extrapolate
+  /// to the tolerance (at least one time tolerance past \f$t_a\f$, so that the probes advance),
+  /// and the proof of \f$[t_a, t_S]\f$: a vector found at \f$t_S\f$ that separates at \f$t_a\f$ too
+  /// (`backwardProof`), else one stored at \f$t_a\f$ that separates at \f$t_S\f$ (F, §5's own).
+  /// Proven: a photo finish if the test succeeded, a hit at \f$t_S\f$ if the distance there is
+  /// within the tolerance, else the solver restarts at \f$t_S\f$. Not proven: \f$t_S\f$ is a far
+  /// end of Brent's bracket (F < 0 there). Counted as a Brent iteration (one evaluation of
+  /// the solver at an iterate) and traced as a `DistanceSecant` step. No probe before the
+  /// first restart (one exact distance only), nor where the distance does not fall.
+  ProbeOutcome probe() {
+    ProbeOutcome out;
+    const S da = last_.distanceAtStart;
+    if (!(taBefore2_ < taBefore_ && distanceBefore_ > da) || result_.brentIterations >= settings_.maxIterations) return out;
+    // Half a time tolerance short of the estimate: where it is that good, the probe lands
+    // still apart (proven), and the next, one time tolerance on, within the tolerance: a
+    // bracket within the time tolerance, the end.
+    const S ts = std::max(ta_ + stepToContact() - S(0.5) * timeTolerance_, ta_ + timeTolerance_);
+    if (!(ts < std::min(t1_, contactBy_))) return out;  // past t1 (or never), or past a known contact: Brent as before
+    ++result_.brentIterations;
+    const PlacedP Ps = P_.at(ts);
+    const PlacedQ Qs = Q_.at(ts);
+    ExtrusionResult<S> test = completeTest(Ps, Qs, ts);
+    if (test.status == ExtrusionStatus::NumericalFailure || test.status == ExtrusionStatus::IterationCap)
+      return out;  // no verdict from a probe that failed: Brent goes on as without it
+    S proof = backwardProof(test.separating, ts);
+    S forward = -std::numeric_limits<S>::infinity();
+    if (proof < tol_) {
+      forward = approximateMaxSd(Ps, Qs, ts);
+      proof = std::max(proof, forward);
+    }
+    const bool proven = proof >= tol_;
+    if (trace_)
+      trace_->steps.push_back(ToiStep<S>{callerTime(ts), proof, callerTime(ta_), callerTime(t1_),
+                                         BrentStepKind::DistanceSecant, proven});
+    if (!proven) {
+      out.farEnd = true;
+      out.t = ts;
+      out.f = forward - tol_;
+      if (test.status == ExtrusionStatus::CollidingAtStart) {  // within the tolerance at ts: kept for the end
+        contactBy_ = ts;
+        contactTest_ = std::move(test);
+      }
+      return out;
+    }
+    ++result_.restarts;
+    if (test.status != ExtrusionStatus::Undecided) {
+      out.verdict = verdictAt(ts, test);
+      return out;
+    }
+    moveStartTo(ts, std::move(test));
+    out.restarted = true;
+    return out;
+  }
+
+  /// How far past \f$t_a\f$ the exact distances of the last complete tests extrapolate to the
+  /// tolerance: \f$t_S - t_a\f$ of the probe (needs \f$d_b > d_a\f$; may be infinite).
+  ///
+  /// Through the last two, \f$(t_b, d_b)\f$ and \f$(t_a, d_a)\f$, the secant: with the slope
+  /// \f$\sigma = (d_a - d_b)/(t_a - t_b) < 0\f$, \f$h = (d_a - \mathrm{tol}) / (-\sigma)\f$. Where the
+  /// bodies turn, d bends, and the secant overshoots into contact when d is concave (each
+  /// probe then only a far end) or stops short when it is convex. With a third,
+  /// \f$(t_c, d_c)\f$, the parabola through all three (Newton's form),
+  /// \f[ d(t_a + h) \approx d_a + \sigma h + \kappa\, h\,(h + t_a - t_b), \qquad
+  ///     \kappa = \frac{\sigma - (d_b - d_c)/(t_b - t_c)}{t_a - t_c}, \f]
+  /// reaches the tolerance where \f$\kappa h^2 + \beta h + (d_a - \mathrm{tol}) = 0\f$, with
+  /// \f$\beta = \sigma + \kappa (t_a - t_b)\f$ its slope at \f$t_a\f$ (Muller's method). Its first
+  /// root past \f$t_a\f$, written without cancellation,
+  /// \f[ h = \frac{2 (d_a - \mathrm{tol})}{-\beta + \sqrt{\beta^2 - 4 \kappa (d_a - \mathrm{tol})}}, \f]
+  /// is taken when it is real and the parabola falls at \f$t_a\f$ (\f$\beta < 0\f$); else the
+  /// secant (a parabola that stays above the tolerance: a near miss, where the secant leaps
+  /// past the minimum).
+  S stepToContact() const {
+    const S gap = last_.distanceAtStart - tol_;
+    const S slope = (last_.distanceAtStart - distanceBefore_) / (ta_ - taBefore_);
+    const S secant = gap / -slope;
+    if (!(taBefore2_ < taBefore_)) return secant;  // two exact distances only
+    const S slopeBefore = (distanceBefore_ - distanceBefore2_) / (taBefore_ - taBefore2_);
+    const S curvature = (slope - slopeBefore) / (ta_ - taBefore2_);
+    const S beta = slope + curvature * (ta_ - taBefore_);
+    const S discriminant = beta * beta - S(4) * curvature * gap;
+    if (!(beta < S(0) && discriminant >= S(0))) return secant;
+    const S muller = S(2) * gap / (-beta + std::sqrt(discriminant));
+    return muller > S(0) && std::isfinite(muller) ? muller : secant;
+  }
+
+  /// The proof of \f$[t_a, t_S]\f$ by the vectors `vectors` found at \f$t_S\f$: the largest lowest
+  /// value of \f$SD(t, \vec{s}_k)\f$ on the interval that its end values allow (the chord's lower
+  /// end, less for the certified variant the margin's parabola, `lowestSupportingDistance`:
+  /// for a vector whose SD falls fast, its end value itself), which proves the interval free
+  /// when at least the tolerance.
+  /// The vectors nearest the closest direction at \f$t_S\f$ come last in GJK's order: they are
+  /// tried first, and the first that proves it ends the search. Their hints stay as found
+  /// at \f$t_S\f$ (the searches at \f$t_a\f$ start from copies).
+  S backwardProof(const SeparatingVectors<S>& vectors, S ts) {
+    S best = -std::numeric_limits<S>::infinity();
+    if (vectors.count == 0) return best;
+    const PlacedP Pa = P_.at(ta_);
+    const PlacedQ Qa = Q_.at(ta_);
+    for (int k = vectors.count - 1; k >= 0 && best < tol_; --k) {
+      SupportHint hintP = vectors.hintP[k], hintQ = vectors.hintQ[k];
+      const S sd = supportingDistance(Pa, Qa, vectors.vectors[k], hintP, hintQ);
+      ++result_.sdEvaluations;
+      best = std::max(best, lowestSupportingDistance(settings_.variant, sd, vectors.sdStart[k], ts - ta_,
+                                                     accelerationP_, accelerationQ_));
+    }
+    return best;
   }
 
   /// The Brent step: the next iterate \f$t_x\f$, the bodies placed there, and the approximate
@@ -483,14 +636,20 @@ class ToiSolver {
 
   /// The restart at \f$t_x\f$: the complete test there failed again, so Brent starts afresh on
   /// \f$[t_x, t_1]\f$ with its vectors and its exact distance at \f$t_x\f$. Remembers the last
-  /// bracket's far end, the last complete test's start and distance, and whether F was well
-  /// above zero at \f$t_x\f$ (a creeping secant), for the next bracket.
+  /// bracket's far end for the next bracket.
   void restartAt(const BrentIterate& x, const BrentStepper<S>& brent, ExtrusionResult<S>&& test) {
     previousHigh_ = std::max(brent.root(), brent.counterpart());
+    moveStartTo(x.t, std::move(test));
+  }
+
+  /// \f$t_a\f$ moves to `tx`, proven free of contact, with the complete test there; the last
+  /// start and its exact distance are kept for the probe's secant.
+  void moveStartTo(S tx, ExtrusionResult<S>&& test) {
+    taBefore2_ = taBefore_;
+    distanceBefore2_ = distanceBefore_;
     taBefore_ = ta_;
     distanceBefore_ = last_.distanceAtStart;
-    creeping_ = x.approximateMaxSd - tol_ > tol_;
-    ta_ = x.t;
+    ta_ = tx;
     last_ = std::move(test);
   }
 
@@ -534,6 +693,7 @@ class ToiSolver {
       const PlacedP Pb = P_.at(tb);
       const PlacedQ Qb = Q_.at(tb);
       if (approximateMaxSd(Pb, Qb, tb) > S(0)) {
+        if (tb == contactBy_ && contactTest_) return hit(tb, *contactTest_);  // a probe's test, within the tolerance there
         const ExtrusionResult<S> atEnd = completeTest(Pb, Qb, tb);
         if (atEnd.status == ExtrusionStatus::CollidingAtStart) return hit(tb, atEnd);
       }
@@ -642,10 +802,16 @@ class ToiSolver {
   S previousHigh_;
   /// The start of the complete test before the last...
   S taBefore_;
-  /// ...and its exact distance there.
+  /// ...and its exact distance there (0 before the first restart: no probe then).
   S distanceBefore_ = S(0);
-  /// True when the last restart came at an iterate where F was more than the tolerance above 0.
-  bool creeping_ = false;
+  /// The start of the complete test before that (\f$t_0\f$ until the second restart)...
+  S taBefore2_;
+  /// ...and its exact distance there (Muller's parabola, `stepToContact`).
+  S distanceBefore2_ = S(0);
+  /// The earliest time a probe found the bodies within the tolerance (no probe goes past it)...
+  S contactBy_ = std::numeric_limits<S>::infinity();
+  /// ...and its complete test, for the hit there when Brent's bracket closes on it.
+  std::optional<ExtrusionResult<S>> contactTest_;
 };
 
 /// A point of P at \f$t_0\f$ to put the query's origin at: the body origin of a rigid body,
