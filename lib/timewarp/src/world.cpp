@@ -977,7 +977,9 @@ void World::settle(double T1, FrameState& frame) {
     end[b] = body.path.stateAt(T1);
     slow[b] = body.rigid.kineticEnergy(end[b]) * body.rigid.inverseMass() / g < scene_.collisionTolerance;
   }
-  // How long each body has been slow and struck by nothing but resting or slow bodies.
+  // How long each body has been slow and struck by nothing but resting or slow bodies;
+  // one that has been so long enough, and was struck in this frame, may settle.
+  std::vector<char> waited(n, 0);
   std::vector<int> ready;
   for (std::size_t b = 0; b < n; ++b) {
     WorldBody& body = bodies_[b];
@@ -988,18 +990,18 @@ void World::settle(double T1, FrameState& frame) {
       supported = supported || bodies_[other].resting();
     }
     body.slowFor = quiet ? body.slowFor + 1.0 / scene_.frameRate : 0.0;
-    slow[b] = quiet && body.slowFor >= kSettleSeconds && !frame.struck[b].by.empty();
-    if (slow[b] && supported) {
+    waited[b] = quiet && body.slowFor >= kSettleSeconds && !frame.struck[b].by.empty();
+    if (waited[b] && supported) {
       settles[b] = 1;
       ready.push_back(int(b));
     }
   }
-  // The bodies waiting to settle on b: slow ones that b struck.
+  // The bodies that may settle on b once b settles: those it struck (striking is mutual).
   std::vector<std::vector<int>> next(n);
   for (std::size_t b = 0; b < n; ++b)
-    if (slow[b])
+    if (waited[b])
       for (const int other : frame.struck[b].by)
-        if (slow[other]) next[other].push_back(int(b));
+        if (waited[other]) next[other].push_back(int(b));
   while (!ready.empty()) {
     const int b = ready.back();
     ready.pop_back();
