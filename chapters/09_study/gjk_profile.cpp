@@ -17,16 +17,8 @@
 //
 // The total instruction count divided by the "calls" line is the instruction count per query.
 #include "../command_line.hpp"
+#include "callgrind_markers.hpp"
 #include "gjk_comparisons.hpp"
-
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-#define GJKX_PROFILE_START() CALLGRIND_START_INSTRUMENTATION
-#define GJKX_PROFILE_STOP() CALLGRIND_STOP_INSTRUMENTATION
-#else
-#define GJKX_PROFILE_START() ((void)0)
-#define GJKX_PROFILE_STOP() ((void)0)
-#endif
 
 #include <cstdio>
 #include <map>

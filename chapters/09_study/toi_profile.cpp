@@ -32,16 +32,8 @@
 // (complete tests, i.e. restarts), and how the queries ended. `--dump N` prints the trace
 // of query N of each workload chosen, one line per iterate and per complete test.
 #include "../command_line.hpp"
+#include "callgrind_markers.hpp"
 #include "toi_comparisons.hpp"
-
-#if __has_include(<valgrind/callgrind.h>)
-#include <valgrind/callgrind.h>
-#define GJKX_PROFILE_START() CALLGRIND_START_INSTRUMENTATION
-#define GJKX_PROFILE_STOP() CALLGRIND_STOP_INSTRUMENTATION
-#else
-#define GJKX_PROFILE_START() ((void)0)
-#define GJKX_PROFILE_STOP() ((void)0)
-#endif
 
 #include <cstdio>
 #include <cstdlib>
