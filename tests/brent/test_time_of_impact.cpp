@@ -1015,6 +1015,60 @@ TEMPLATE_TEST_CASE("a half turn per interval: two rods turning in phase", "[toi]
   CHECK(paper.status == ToiStatus::NoCollision);  // same configuration at both ends
 }
 
+// A grazing spin: a 32-sided prism (radius 0.05, half length 0.5, axis x) spinning about its
+// own axis at 400 rad/s (the torso's fastest cartilages turn at 400-450) next to a sphere of
+// radius 0.2 fixed above it, with tolerance 1e-3. The sphere's centre is at
+// y = 0.05 + 0.2 + 1.25 tol: the distance is 1.25 tol where a vertex of the prism points
+// at the sphere and 1.25 tol + 0.05 (1 - cos(π/32)) = 1.49 tol where a face does, so it
+// never comes within the tolerance: no collision. But the support along any fixed
+// direction falls at up to ω r = 20 per unit time as the prism turns, so each stored vector
+// proves a link of only about (d - tol) / 20 = 1.3e-5: §5's proof over the 0.01 interval
+// (four radians) is a chain of hundreds of links, and the solver runs into its cap.
+// With `acceptedDistance` = 1.5 tol (what the world sets) the first restart, already
+// within the band, ends the query: a hit at a time proven free of contact, at a distance
+// between the tolerance and the band.
+TEMPLATE_TEST_CASE("a grazing spin: acceptedDistance ends the chain of links", "[toi][hard][rotation][grazing]", float,
+                   double) {
+  using S = TestType;
+  const double r = 0.05, tol = 1e-3;
+  std::vector<Vector3<S>> points;
+  for (int k = 0; k < 32; ++k) {
+    const double a = 2 * kPi * (k + 0.5) / 32;
+    for (const double x : {-0.5, 0.5}) points.push_back(Vector3<double>(x, r * std::cos(a), r * std::sin(a)).cast<S>());
+  }
+  const auto prism = spinning(Polytope<S>::hull(points), Vector3<S>::Zero(), Vector3<S>(S(400), 0, 0));
+  const auto ball = fixedAt(Sphere<S>(S(0.2)), Vector3<S>(0, S(r + 0.2 + 1.25 * tol), 0));
+  ToiSettings<S> settings;
+  settings.variant = ExtrusionVariant::Certified;
+  settings.collisionTolerance = S(tol);
+  const auto proof = timeOfImpact(prism, ball, S(0), S(0.01), settings);
+  settings.acceptedDistance = S(1.5 * tol);
+  const auto band = timeOfImpact(prism, ball, S(0), S(0.01), settings);
+  std::cout << "TOI grazing spin (" << scalarName<S>() << "): without the band " << toString(proof.status) << " after "
+            << proof.brentIterations << " Brent iterations; with it " << toString(band.status) << " at "
+            << band.time << ", distance " << band.distance / tol << " tol, after " << band.brentIterations << "\n";
+  // Without the band: never "hit" (the distance stays above the tolerance), and never a
+  // silent no: a photo finish proven link by link, or the cap.
+  CHECK((proof.status == ToiStatus::PhotoFinish || proof.status == ToiStatus::IterationCap));
+  // With it: a hit within the band, at a time the solver proved free of contact, for a
+  // handful of iterations.
+  REQUIRE(band.status == ToiStatus::Hit);
+  CHECK(double(band.distance) > tol);
+  CHECK(double(band.distance) <= 1.5 * tol);
+  CHECK(band.brentIterations <= 5);
+  CHECK(band.brentIterations < proof.brentIterations);
+  // From the 16th iteration on (what the world sets): the chain runs as §5 runs it until
+  // then, and ends at the first restart in the band after it, well short of the cap.
+  settings.acceptedAfter = 16;
+  const auto late = timeOfImpact(prism, ball, S(0), S(0.01), settings);
+  REQUIRE(late.status == ToiStatus::Hit);
+  CHECK(double(late.distance) > tol);
+  CHECK(double(late.distance) <= 1.5 * tol);
+  CHECK(late.brentIterations >= 16);
+  CHECK(late.brentIterations < settings.maxIterations);
+  CHECK(double(late.time) >= double(band.time));
+}
+
 // Both bodies fast toward each other: unit boxes from x = -250 and x = +250 (offset 0.3 in
 // y, 0.2 in z: faces still overlap) at 500 per unit time each, a relative speed of 1000
 // sizes per interval. The gap is 500 - 1 - 1000 t: within tol at t* = (499 - tol)/1000.
