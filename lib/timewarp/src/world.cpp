@@ -508,8 +508,20 @@ std::vector<PiecePair> World::piecePairs(int i, int j, double t0, double t1, Fra
       BodyPairSettings<S> settings;
       settings.tolerance = S(scene_.collisionTolerance);
       settings.frontTracking = settings_.frontTracking;
-      if constexpr (std::is_same_v<S, float>) query = std::make_unique<BodyPairQuery<S>>(*A.bvhFloat, *B.bvhFloat, settings);
-      else query = std::make_unique<BodyPairQuery<S>>(*A.bvh, *B.bvh, settings);
+      // Each body's 14-DOPs at a pose are shared by all its pairs: after a collision every
+      // pair of the struck body is queried at the same two poses, and its nodes' slab
+      // ends are computed once for all of them (body_kdops.hpp).
+      auto& kdops = [&]() -> auto& {
+        if constexpr (std::is_same_v<S, float>) return kdopsFloat_;
+        else return kdopsDouble_;
+      }();
+      kdops.resize(bodies_.size());
+      for (int b : {i, j})
+        if (!kdops[b]) {
+          if constexpr (std::is_same_v<S, float>) kdops[b] = std::make_unique<BodyKdops<S>>(*bodies_[b].bvhFloat);
+          else kdops[b] = std::make_unique<BodyKdops<S>>(*bodies_[b].bvh);
+        }
+      query = std::make_unique<BodyPairQuery<S>>(*kdops[i], *kdops[j], settings);
     }
     const BodyPairOutput<S> out = query->query(A.template motionIn<S>(), B.template motionIn<S>(), S(t0), S(t1));
     frame.report.counters.kdopNodes += out.counters.nodesVisited;

@@ -25,6 +25,7 @@
 /// all-pairs test of the pieces (`bruteForcePiecePairs`), and the tests check that they are.
 #pragma once
 
+#include <gjkx/kdop/body_kdops.hpp>
 #include <gjkx/kdop/bvh.hpp>
 #include <gjkx/kdop/kdop_extrusion.hpp>
 #include <gjkx/motion/motion.hpp>
@@ -33,6 +34,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -50,20 +52,6 @@ struct PiecePair {
   bool operator==(const PiecePair& o) const { return a == o.a && b == o.b; }
   /// Ordered by a, then b (the order of every query's output).
   bool operator<(const PiecePair& o) const { return a < o.a || (a == o.a && b < o.b); }
-};
-
-/// What a body-pair query did, for a scene's statistics.
-struct BodyPairCounters {
-  /// BVTT nodes tested (pairs of 14-DOPs put to the k-DOP extrusion test).
-  int nodesVisited = 0;
-  /// Support queries run for slab ends (a full 14-DOP is 14; a test that one slab settles needs 4).
-  int supportQueries = 0;
-  /// The size of the front the query ended on.
-  int frontSize = 0;
-  /// Piece pairs that survived.
-  int pairsKept = 0;
-  /// BVTT nodes the front climbed back to.
-  int climbs = 0;
 };
 
 /// The outcome of a body-pair query.
@@ -122,10 +110,23 @@ class BodyPairQuery {
   /// The parent of the root pair.
   static constexpr std::uint64_t kNoParent = ~std::uint64_t(0);
 
-  /// A query over the hierarchies of A and B. Throws std::invalid_argument for bad settings.
+  /// A query over the hierarchies of A and B, with 14-DOP caches of its own. Throws
+  /// std::invalid_argument for bad settings.
   BodyPairQuery(const Bvh<S>& a, const Bvh<S>& b, BodyPairSettings<S> settings = {})
-      : settings_(settings), bodyA_(a), bodyB_(b) {
+      : settings_(settings),
+        ownedA_(std::make_unique<BodyKdops<S>>(a)),
+        ownedB_(std::make_unique<BodyKdops<S>>(b)),
+        bodyA_(ownedA_.get()),
+        bodyB_(ownedB_.get()) {
     settings_.validate();
+  }
+  /// A query over the bodies whose 14-DOP caches are `a` and `b`, shared with the other
+  /// pairs these bodies are in (`body_kdops.hpp`); the caches must outlive the query.
+  /// Throws std::invalid_argument for bad settings, or if `a` and `b` are the same cache.
+  BodyPairQuery(BodyKdops<S>& a, BodyKdops<S>& b, BodyPairSettings<S> settings = {})
+      : settings_(settings), bodyA_(&a), bodyB_(&b) {
+    settings_.validate();
+    if (&a == &b) throw std::invalid_argument("bodyPair: a body's 14-DOP cache cannot stand for both bodies");
   }
 
   /// The piece pairs of A (moving along `motionA`) and B (along `motionB`) that the k-DOP
@@ -134,8 +135,8 @@ class BodyPairQuery {
   BodyPairOutput<S> query(const Motion<S>& motionA, const Motion<S>& motionB, S t0, S t1) {
     requireInterval(t0, t1, "bodyPair");
     ++stamp_;
-    bodyA_.begin(motionA, t0, t1);
-    bodyB_.begin(motionB, t0, t1);
+    bodyA_->begin(motionA, t0, t1);
+    bodyB_->begin(motionB, t0, t1);
     duration_ = t1 - t0;
     BodyPairOutput<S> out;
     counters_ = &out.counters;
@@ -169,123 +170,14 @@ class BodyPairQuery {
   const BodyPairSettings<S>& settings() const { return settings_; }
 
  private:
-  // One body's pose-dependent state: the slab ends of its nodes' 14-DOPs at t0 and t1,
-  // each computed on demand (one support query, when a test first needs it). They are
-  // kept in two banks, each tied to one pose: a query whose t0 pose is the last query's t1
-  // pose (frames that follow each other) or the same pose again (a body at rest) reads
-  // the ends already computed there. A test that a slab settles reads 4 of a node pair's
-  // 56 ends.
-  struct Body {
-    explicit Body(const Bvh<S>& h)
-        : bvh(&h), values(h.nodes().size()), known(h.nodes().size(), {0, 0}), epochOf(h.nodes().size(), {0, 0}),
-          hints(h.nodes().size()) {
-      for (auto& hint : hints) hint.fill(0);
-    }
-    void begin(const Motion<S>& motion, S t0, S t1) {
-      const Pose<S> pose0 = motion.pose(t0);
-      const KdopFrame<S> frame0 = KdopFrame<S>::of(pose0);
-      const bool sameEnds = (t1 == t0) || motion.isStatic();
-      int b0 = bank[0].holds(frame0) ? 0 : (bank[1].holds(frame0) ? 1 : -1);
-      if (b0 < 0) {
-        b0 = 0;
-        renew(b0, frame0, pose0);
-      }
-      int b1 = b0;
-      if (!sameEnds) {
-        const Pose<S> pose1 = motion.pose(t1);
-        const KdopFrame<S> frame1 = KdopFrame<S>::of(pose1);
-        b1 = 1 - b0;
-        if (!bank[b1].holds(frame1)) renew(b1, frame1, pose1);
-      }
-      bankOf[0] = b0;
-      bankOf[1] = b1;
-      bound = motion.bound();
-    }
-    // Slab end of node i: slab k, upper end (hi_k) or lower (lo_k), at t0 (end 0) or t1.
-    // hi_k = d_k . S(d_k) + a_k . p (bvh.hpp, kdopAt). An inner node's ends are widened by
-    // a few round-offs of their size, so that they hold their descendants' computed ends
-    // (hill climbing on two different hulls may round differently): the BVH then prunes
-    // exactly what the all-pairs test prunes. Support values are at most sqrt(3) r + |p|_1
-    // in size, r the node's radius about the body origin.
-    S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
-      const int b = bankOf[end];
-      if (epochOf[i][b] != bank[b].epoch) {
-        epochOf[i][b] = bank[b].epoch;
-        known[i][b] = 0;
-      }
-      const int side = 2 * k + (upper ? 0 : 1);
-      const int slot = 14 * b + side;
-      if (known[i][b] & (1u << side)) return values[i][slot];
-      known[i][b] = static_cast<std::uint16_t>(known[i][b] | (1u << side));
-      ++counters.supportQueries;
-      const BvhNode<S>& node = bvh->node(i);
-      const Vector3<S>& d = bank[b].frame.direction[k];
-      const Vector3<S> direction = upper ? d : Vector3<S>(-d);
-      // After a large turn (`freshStart`), last time's vertex is far from the answer: the
-      // climb starts from the node's table instead (a few steps from anywhere).
-      if (bank[b].freshStart) hints[i][slot] = node.startFor(direction);
-      S v = d.dot(node.hull.support(direction, hints[i][slot])) + bank[b].frame.offset[k];
-      if (!node.isLeaf()) {
-        const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + bank[b].reach);
-        v += upper ? pad : -pad;
-      }
-      values[i][slot] = v;
-      return v;
-    }
-    S acceleration(int i) const { return bound.pointAcceleration(bvh->node(i).hull.boundingRadius()); }
-
-    /// The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
-    struct Bank {
-      /// The pose's slab directions and offsets.
-      KdopFrame<S> frame;
-      /// \f$\lVert p\rVert_1\f$ of the pose (the inner nodes' round-off allowance).
-      S reach = S(0);
-      /// Which computation of the ends is current.
-      unsigned epoch = 0;
-      /// False until a pose is set.
-      bool valid = false;
-      /// True if the pose turned by more than about 25 degrees since the bank's last pose
-      /// (or has none): its climbs start from the nodes' tables, not from their hints.
-      bool freshStart = true;
-      /// True if the bank holds the ends at the pose of `f` (bit for bit the same frame).
-      bool holds(const KdopFrame<S>& f) const {
-        if (!valid) return false;
-        for (int k = 0; k < Kdop14<S>::kSlabs; ++k)
-          if (f.offset[k] != frame.offset[k] || f.direction[k] != frame.direction[k]) return false;
-        return true;
-      }
-    };
-    void renew(int b, const KdopFrame<S>& f, const Pose<S>& pose) {
-      // The turn since the bank's last pose: the x, y and z axes seen from the body moved by
-      // less than about 25 degrees each (cos 25 = 0.906) or the hints are stale.
-      bool coherent = bank[b].valid;
-      for (int k = 0; k < 3 && coherent; ++k) coherent = f.direction[k].dot(bank[b].frame.direction[k]) > S(0.906);
-      bank[b].freshStart = !coherent;
-      bank[b].frame = f;
-      bank[b].reach = pose.translation.template lpNorm<1>();
-      bank[b].epoch = ++epochs;
-      bank[b].valid = true;
-    }
-
-    const Bvh<S>* bvh;
-    Bank bank[2];
-    int bankOf[2] = {0, 0};
-    unsigned epochs = 0;
-    MotionBound<S> bound;
-    std::vector<std::array<S, 28>> values;
-    std::vector<std::array<std::uint16_t, 2>> known;
-    std::vector<std::array<unsigned, 2>> epochOf;
-    std::vector<std::array<SupportHint, 28>> hints;
-  };
-
   std::uint64_t key(int a, int b) const {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
   }
 
   // The BVTT's rule: open the larger node (ties: A), never a leaf.
   bool opensA(int a, int b) const {
-    const BvhNode<S>& na = bodyA_.bvh->node(a);
-    const BvhNode<S>& nb = bodyB_.bvh->node(b);
+    const BvhNode<S>& na = bodyA_->bvh().node(a);
+    const BvhNode<S>& nb = bodyB_->bvh().node(b);
     if (na.isLeaf()) return false;
     if (nb.isLeaf()) return true;
     return na.size >= nb.size;
@@ -299,12 +191,12 @@ class BodyPairQuery {
     const S scale = S(1) / Kdop14<S>::axisLength(k);
     BodyPairCounters& c = *counters_;
     const auto gap = [&](int end) {
-      return bAbove ? (bodyB_.value(b, k, false, end, c) - bodyA_.value(a, k, true, end, c)) * scale
-                    : (bodyA_.value(a, k, false, end, c) - bodyB_.value(b, k, true, end, c)) * scale;
+      return bAbove ? (bodyB_->value(b, k, false, end, c) - bodyA_->value(a, k, true, end, c)) * scale
+                    : (bodyA_->value(a, k, false, end, c) - bodyB_->value(b, k, true, end, c)) * scale;
     };
     const S gap0 = gap(0);
     if (!(gap0 > settings_.tolerance)) return false;  // settled at t0: the t1 ends are not needed
-    return slabSeparatesOverInterval(gap0, gap(1), duration_, bodyA_.acceleration(a), bodyB_.acceleration(b),
+    return slabSeparatesOverInterval(gap0, gap(1), duration_, bodyA_->acceleration(a), bodyB_->acceleration(b),
                                      settings_.variant, settings_.tolerance);
   }
 
@@ -332,8 +224,8 @@ class BodyPairQuery {
         front.push_back({n.a, n.b, true, side, n.parent});
         continue;
       }
-      const BvhNode<S>& ni = bodyA_.bvh->node(n.a);
-      const BvhNode<S>& nj = bodyB_.bvh->node(n.b);
+      const BvhNode<S>& ni = bodyA_->bvh().node(n.a);
+      const BvhNode<S>& nj = bodyB_->bvh().node(n.b);
       if (ni.isLeaf() && nj.isLeaf()) {
         front.push_back({n.a, n.b, false, -1, n.parent});
         pairs.push_back({ni.piece, nj.piece});
@@ -390,7 +282,9 @@ class BodyPairQuery {
   }
 
   BodyPairSettings<S> settings_;
-  Body bodyA_, bodyB_;
+  std::unique_ptr<BodyKdops<S>> ownedA_, ownedB_;  // none when the caches are shared
+  BodyKdops<S>* bodyA_;
+  BodyKdops<S>* bodyB_;
   S duration_ = S(0);
   unsigned stamp_ = 0;
   std::vector<FrontNode> front_;

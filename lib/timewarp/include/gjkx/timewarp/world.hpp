@@ -237,6 +237,11 @@ class World {
   double intervalEnd_ = 0;  // the end of the interval an ordering is running (the frame's end, or a part of it)
   std::vector<TraceEvent> trace_;
   std::vector<std::array<double, 3>> collisionLog_;
+  /// Per mesh body, its nodes' 14-DOPs at its recent poses, shared by all its body pairs
+  /// (kdop's `BodyKdops`; created when a pair first needs it).
+  std::vector<std::unique_ptr<BodyKdops<float>>> kdopsFloat_;
+  /// The same in double.
+  std::vector<std::unique_ptr<BodyKdops<double>>> kdopsDouble_;
   /// Per pair of mesh bodies, the body-pair query that keeps its front between frames (kdop).
   std::map<long long, std::unique_ptr<BodyPairQuery<float>>> frontsFloat_;
   /// The same in double.
