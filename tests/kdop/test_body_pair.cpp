@@ -86,6 +86,46 @@ TEMPLATE_TEST_CASE("interval query: the BVH returns exactly the pairs of the all
   }
 }
 
+// Three bodies, each with one 14-DOP cache (BodyKdops) shared by its two pairs, as the
+// world has them: the pairs are queried in turn, sometimes over the same interval (a
+// collision's re-checks: same poses, ends read from the other pair), sometimes over a
+// shorter one from a later start (a rollback), sometimes with a changed motion. Every
+// answer must equal the all-pairs test, and sharing must save support queries.
+TEMPLATE_TEST_CASE("shared 14-DOP caches: pairs of one body read each other's slab ends, same answers",
+                   "[kdop][body_pair]", float, double) {
+  using S = TestType;
+  std::mt19937 rng(31);
+  const Bvh<S> a = randomBody<S>(rng, 20), b = randomBody<S>(rng, 15), c = randomBody<S>(rng, 12);
+  BodyKdops<S> ka(a), kb(b), kc(c);
+  BodyPairQuery<S> ab(ka, kb), ac(ka, kc), bc(kb, kc);
+  BodyPairQuery<S> abOwn(a, b), acOwn(a, c);  // the same pairs with caches of their own
+  CHECK_THROWS_WITH(BodyPairQuery<S>(ka, ka), Catch::Contains("bodyPair"));
+  auto motion = [&](double reach) {
+    return Motion<S>::screw(randomPose<S>(rng, reach), randomVector<S>(rng, 2), randomVector<S>(rng, 1.5));
+  };
+  Motion<S> ma = motion(1), mb = motion(2), mc = motion(2);
+  long shared = 0, own = 0;
+  int kept = 0;
+  for (int event = 0; event < 120; ++event) {
+    const S t0 = S(0.01) * S(event % 7), t1 = S(0.1);
+    if (event % 11 == 10) ma = motion(1);  // a collision gives A a new path
+    const auto outAb = ab.query(ma, mb, t0, t1);
+    const auto outAc = ac.query(ma, mc, t0, t1);  // A at the same two poses: its ends are read
+    const auto outBc = bc.query(mb, mc, t0, t1);
+    REQUIRE(outAb.pairs == bruteForcePiecePairs(a, ma, b, mb, t0, t1));
+    REQUIRE(outAc.pairs == bruteForcePiecePairs(a, ma, c, mc, t0, t1));
+    REQUIRE(outBc.pairs == bruteForcePiecePairs(b, mb, c, mc, t0, t1));
+    const auto ownAb = abOwn.query(ma, mb, t0, t1), ownAc = acOwn.query(ma, mc, t0, t1);
+    REQUIRE(ownAb.pairs == outAb.pairs);
+    REQUIRE(ownAc.pairs == outAc.pairs);
+    shared += outAb.counters.supportQueries + outAc.counters.supportQueries;
+    own += ownAb.counters.supportQueries + ownAc.counters.supportQueries;
+    kept += outAb.counters.pairsKept + outAc.counters.pairsKept + outBc.counters.pairsKept;
+  }
+  CHECK(kept > 0);
+  CHECK(shared < own);
+}
+
 TEMPLATE_TEST_CASE("front tracking returns the pairs of a fresh traversal, frame after frame", "[kdop][body_pair]", float,
                    double) {
   using S = TestType;

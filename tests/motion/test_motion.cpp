@@ -247,6 +247,27 @@ TEMPLATE_TEST_CASE("motion free flight", "[motion]", float, double) {
   CHECK(moved.pose(S(2)).rotation == m.pose(S(2)).rotation);
 }
 
+// Equality of motions (what a cache of poses keys on, kdop's BodyKdops): the same kind with
+// every parameter equal, and nothing else.
+TEMPLATE_TEST_CASE("motion equality: same kind, same parameters", "[motion]", float, double) {
+  using S = TestType;
+  const Pose<S> start = Pose<S>::fromAxisAngle(Vec<S>(0, 0, 1), S(kPi / 4), Vec<S>(1, 2, 3));
+  const gjkx::Matrix3<S> end = Eigen::AngleAxis<S>(S(3 * kPi / 4), Vec<S>(0, 0, 1)).toRotationMatrix();
+  const Motion<S> flight = Motion<S>::freeFlight(start, Vec<S>(1, 0, 2), Vec<S>(0, 0, -10), end, S(1), S(3));
+  CHECK(flight == Motion<S>::freeFlight(start, Vec<S>(1, 0, 2), Vec<S>(0, 0, -10), end, S(1), S(3)));
+  CHECK(flight != Motion<S>::freeFlight(start, Vec<S>(1, 0, 2), Vec<S>(0, 0, -10), end, S(1), S(3.5)));
+  CHECK(flight != Motion<S>::freeFlight(start, Vec<S>(1, 0, 2), Vec<S>(0, 0, -9), end, S(1), S(3)));
+  CHECK(flight != flight.translated(Vec<S>(0, 0, 1e-3)));
+  const Motion<S> screw = Motion<S>::screw(start, Vec<S>(1, 0, 0), Vec<S>(0, 0, 1));
+  CHECK(screw == Motion<S>::screw(start, Vec<S>(1, 0, 0), Vec<S>(0, 0, 1)));
+  CHECK(screw != Motion<S>::screw(start, Vec<S>(1, 0, 0), Vec<S>(0, 0, 2)));
+  CHECK(Motion<S>::fixed(start) == Motion<S>::fixed(start));
+  // Different kinds are different motions, even where their poses agree.
+  CHECK(Motion<S>::fixed(start) != Motion<S>::constantVelocity(start, Vec<S>::Zero()));
+  CHECK(start == Pose<S>(start));
+  CHECK(start != Pose<S>::identity());
+}
+
 // The free flight's bound really bounds it: the angle turned between nearby samples never
 // exceeds angularSpeed * dt, and the translation's second difference is |a|.
 TEST_CASE("motion free flight turns at the rate its bound states", "[motion]") {

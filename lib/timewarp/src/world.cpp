@@ -523,9 +523,9 @@ std::vector<PiecePair> World::piecePairs(int i, int j, double t0, double t1, Fra
         }
       query = std::make_unique<BodyPairQuery<S>>(*kdops[i], *kdops[j], settings);
     }
-    const BodyPairOutput<S> out = query->query(A.template motionIn<S>(), B.template motionIn<S>(), S(t0), S(t1));
+    BodyPairOutput<S> out = query->query(A.template motionIn<S>(), B.template motionIn<S>(), S(t0), S(t1));
     frame.report.counters.kdopNodes += out.counters.nodesVisited;
-    pairs = out.pairs;
+    pairs = std::move(out.pairs);
   } else {
     for (int a = 0; a < int(A.pieces.size()); ++a)
       for (int b = 0; b < int(B.pieces.size()); ++b) pairs.push_back(PiecePair{a, b});

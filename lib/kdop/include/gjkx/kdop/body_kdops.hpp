@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace gjkx {
@@ -56,6 +57,7 @@ class BodyKdops {
         epochOf_(bvh.nodes().size(), {0, 0}),
         hints_(bvh.nodes().size()) {
     for (auto& hint : hints_) hint.fill(0);
+    for (const auto& node : bvh.nodes()) radius_.push_back(node.hull.boundingRadius());
   }
 
   /// The hierarchy.
@@ -64,6 +66,13 @@ class BodyKdops {
   /// Sets the poses of the next reads: the body along `motion` at `t0` (end 0) and `t1`
   /// (end 1). Banks that hold either pose keep their ends.
   void begin(const Motion<S>& motion, S t0, S t1) {
+    // The same motion over the same interval as the last call (another pair of this body,
+    // queried at the same two poses): the banks are set already, and the poses, two
+    // slerps, need not be computed again.
+    if (lastMotion_ && t0 == lastT0_ && t1 == lastT1_ && *lastMotion_ == motion) return;
+    lastMotion_ = motion;
+    lastT0_ = t0;
+    lastT1_ = t1;
     const Pose<S> pose0 = motion.pose(t0);
     const KdopFrame<S> frame0 = KdopFrame<S>::of(pose0);
     bound_ = motion.bound();
@@ -96,14 +105,27 @@ class BodyKdops {
   /// Support values are at most \f$\sqrt3 r + |p|_1\f$ in size, r the node's radius about the
   /// body origin. A support query computed here is counted in `counters`.
   S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
+    // Most reads find the end computed already (by this pair or another of the body's):
+    // that path is kept small, so that it is inlined into the slab tests.
     const int b = bankOf_[end];
+    const int side = 2 * k + (upper ? 0 : 1);
+    if (epochOf_[i][b] == bank_[b].epoch && (known_[i][b] & (1u << side))) return values_[i][14 * b + side];
+    return compute(i, k, upper, b, counters);
+  }
+
+  /// The bound on any point's acceleration of node i over the last `begin`'s motion
+  /// (`MotionBound::pointAcceleration` at the node's radius).
+  S acceleration(int i) const { return bound_.pointAcceleration(radius_[i]); }
+
+ private:
+  // Slab end (k, upper) of node i in bank b, by one support query; kept for later reads.
+  [[gnu::noinline]] S compute(int i, int k, bool upper, int b, BodyPairCounters& counters) {
     if (epochOf_[i][b] != bank_[b].epoch) {
       epochOf_[i][b] = bank_[b].epoch;
       known_[i][b] = 0;
     }
     const int side = 2 * k + (upper ? 0 : 1);
     const int slot = 14 * b + side;
-    if (known_[i][b] & (1u << side)) return values_[i][slot];
     known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
     ++counters.supportQueries;
     const BvhNode<S>& node = bvh_->node(i);
@@ -121,11 +143,6 @@ class BodyKdops {
     return v;
   }
 
-  /// The bound on any point's acceleration of node i over the last `begin`'s motion
-  /// (`MotionBound::pointAcceleration` at the node's radius).
-  S acceleration(int i) const { return bound_.pointAcceleration(bvh_->node(i).hull.boundingRadius()); }
-
- private:
   /// The slab ends of all nodes at one pose, valid for nodes whose epoch matches.
   struct Bank {
     /// The pose's slab directions and offsets.
@@ -173,10 +190,13 @@ class BodyKdops {
   int bankOf_[2] = {0, 0};
   unsigned epochs_ = 0;
   MotionBound<S> bound_;
+  std::optional<Motion<S>> lastMotion_;  // the last begin's motion and interval
+  S lastT0_ = S(0), lastT1_ = S(0);
   std::vector<std::array<S, 28>> values_;
   std::vector<std::array<std::uint16_t, 2>> known_;
   std::vector<std::array<unsigned, 2>> epochOf_;
   std::vector<std::array<SupportHint, 28>> hints_;
+  std::vector<S> radius_;  // each node's bounding radius, side by side (read at every slab test)
 };
 
 }  // namespace gjkx

@@ -144,11 +144,11 @@ class BodyPairQuery {
       front_.assign(1, FrontNode{Bvh<S>::root(), Bvh<S>::root(), false, -1, kNoParent});
       if (!settings_.frontTracking) parentOf_.clear();
     }
-    std::vector<FrontNode> next;
-    next.reserve(front_.size() + 16);
+    std::vector<FrontNode>& next = next_;  // kept between queries, so that its memory is too
+    next.clear();
     for (const FrontNode& node : front_) descend(node, next, out.pairs);
     if (settings_.frontTracking) climb(next);
-    front_ = std::move(next);
+    front_.swap(next);
     std::sort(out.pairs.begin(), out.pairs.end());
     out.counters.frontSize = static_cast<int>(front_.size());
     out.counters.pairsKept = static_cast<int>(out.pairs.size());
@@ -239,7 +239,7 @@ class BodyPairQuery {
         first.b = nj.left;
         second.b = nj.right;
       }
-      if (settings_.frontTracking) parentOf_.emplace(key(n.a, n.b), n.parent);  // for when the front climbs to it
+      if (settings_.frontTracking) parentOf_.try_emplace(key(n.a, n.b), n.parent);  // for when the front climbs to it
       stack_.push_back(second);
       stack_.push_back(first);
     }
@@ -290,7 +290,7 @@ class BodyPairQuery {
   std::vector<FrontNode> front_;
   std::unordered_map<std::uint64_t, std::uint64_t> parentOf_;
   std::unordered_map<std::uint64_t, unsigned> climbFailed_;
-  std::vector<FrontNode> stack_, climbed_;
+  std::vector<FrontNode> stack_, climbed_, next_;
   BodyPairCounters* counters_ = nullptr;
 };
 

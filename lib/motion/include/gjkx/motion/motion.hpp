@@ -40,6 +40,8 @@ struct StaticMotion {
   const Pose<Scalar>& pose(Scalar /*t*/) const { return start; }
   /// No motion at all.
   MotionBound<Scalar> bound() const { return {}; }
+  /// The same motion: every parameter equal.
+  bool operator==(const StaticMotion& o) const { return start == o.start; }
 };
 
 /// Constant linear velocity, no rotation: \f$p(t) = p_0 + v\,(t - t_0)\f$ ("linear motion", §3).
@@ -59,6 +61,8 @@ struct ConstantVelocity {
   }
   /// Linear motion: nothing bends.
   MotionBound<Scalar> bound() const { return {}; }
+  /// The same motion: every parameter equal.
+  bool operator==(const ConstantVelocity& o) const { return start == o.start && velocity == o.velocity && t0 == o.t0; }
 };
 
 /// Constant acceleration, no rotation (ballistic flight): \f$p(t) = p_0 + v\,\tau + \tfrac12 a\,\tau^2\f$, \f$\tau = t - t_0\f$.
@@ -82,6 +86,8 @@ struct ConstantAcceleration {
   }
   /// The acceleration, and no rotation.
   MotionBound<Scalar> bound() const { return {acceleration.norm(), Scalar(0), Scalar(0)}; }
+  /// The same motion: every parameter equal.
+  bool operator==(const ConstantAcceleration& o) const { return start == o.start && velocity == o.velocity && acceleration == o.acceleration && t0 == o.t0; }
 };
 
 /// Screw motion: constant linear velocity of the body origin and constant angular
@@ -110,6 +116,8 @@ struct ScrewMotion {
   }
   /// Constant angular speed, no linear acceleration.
   MotionBound<Scalar> bound() const { return {Scalar(0), angularVelocity.norm(), Scalar(0)}; }
+  /// The same motion: every parameter equal.
+  bool operator==(const ScrewMotion& o) const { return start == o.start && velocity == o.velocity && angularVelocity == o.angularVelocity && t0 == o.t0; }
 };
 
 /// Interpolation between two poses over [t0, t1]: the translation moves on a line and
@@ -140,6 +148,8 @@ struct PoseInterpolation {
     const Eigen::Quaternion<Scalar> q0(from.rotation), q1(to.rotation);
     return {Scalar(0), q0.angularDistance(q1) / (t1 - t0), Scalar(0)};
   }
+  /// The same motion: every parameter equal.
+  bool operator==(const PoseInterpolation& o) const { return from == o.from && to == o.to && t0 == o.t0 && t1 == o.t1; }
 };
 
 /// Free flight of a rigid body over [t0, t1], as the dynamics stage hands it to the
@@ -186,6 +196,11 @@ struct FreeFlightPath {
   MotionBound<Scalar> bound() const {
     const Eigen::Quaternion<Scalar> q0(start.rotation), q1(endRotation);
     return {acceleration.norm(), q0.angularDistance(q1) / (t1 - t0), Scalar(0)};
+  }
+  /// The same motion: every parameter equal.
+  bool operator==(const FreeFlightPath& o) const {
+    return start == o.start && velocity == o.velocity && acceleration == o.acceleration &&
+           endRotation == o.endRotation && t0 == o.t0 && t1 == o.t1;
   }
 };
 
@@ -312,6 +327,10 @@ class Motion {
   }
   /// True for a body that never moves (lets a scene skip its work).
   bool isStatic() const { return std::holds_alternative<StaticMotion<Scalar>>(motion_); }
+  /// The same motion: the same kind, every parameter equal (so every pose equal).
+  bool operator==(const Motion& o) const { return motion_ == o.motion_; }
+  /// Not the same motion.
+  bool operator!=(const Motion& o) const { return !(*this == o); }
   /// The alternative held, for code that wants to dispatch on it.
   const Variant& variant() const { return motion_; }
 

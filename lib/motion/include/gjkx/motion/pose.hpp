@@ -22,6 +22,11 @@ struct Pose {
   /// The identity pose: body frame equals world frame.
   static Pose identity() { return Pose{}; }
 
+  /// Bit for bit the same pose (every entry equal).
+  bool operator==(const Pose& o) const { return rotation == o.rotation && translation == o.translation; }
+  /// Not the same pose.
+  bool operator!=(const Pose& o) const { return !(*this == o); }
+
   /// A pure translation.
   static Pose translate(const Vector3<Scalar>& p) {
     Pose pose;
