@@ -1250,4 +1250,14 @@ TEST_CASE("time of impact refuses a bad interval or tolerance", "[toi][input]") 
     INFO("tolerance " << bad << ": " << message);
     CHECK(message.rfind("toiSettings.collisionTolerance", 0) == 0);
   }
+  for (double bad : {-1e-3, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    ToiSettings<double> settings;
+    settings.acceptedDistance = bad;
+    const auto message = invalidArgumentMessage([&] { timeOfImpact(P, Q, 0.0, 1.0, settings); });
+    INFO("accepted distance " << bad << ": " << message);
+    CHECK(message.rfind("toiSettings.acceptedDistance", 0) == 0);
+  }
+  ToiSettings<double> settings;
+  settings.acceptedAfter = -1;
+  CHECK(invalidArgumentMessage([&] { timeOfImpact(P, Q, 0.0, 1.0, settings); }).rfind("toiSettings.acceptedAfter", 0) == 0);
 }

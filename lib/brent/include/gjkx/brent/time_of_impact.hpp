@@ -916,6 +916,9 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   };
   requireInterval(t0, t1, "timeOfImpact");
   if (!(settings.collisionTolerance > S(0))) failInput("toiSettings.collisionTolerance", "must be positive");
+  if (!(settings.acceptedDistance >= S(0)) || !std::isfinite(settings.acceptedDistance))
+    failInput("toiSettings.acceptedDistance", "must be finite and not negative");
+  if (settings.acceptedAfter < 0) failInput("toiSettings.acceptedAfter", "must not be negative");
   if constexpr (detail::CanTranslate<MovingP>::value && detail::CanTranslate<MovingQ>::value &&
                 detail::CanRetime<MovingP>::value && detail::CanRetime<MovingQ>::value) {
     const Vector3<S> origin = settings.inFrameOfP ? detail::queryOrigin(P, t0) : Vector3<S>::Zero();

@@ -28,21 +28,6 @@
 
 namespace gjkx {
 
-/// Work counted by the k-DOP queries (a body pair's statistics).
-struct BodyPairCounters {
-  /// BVTT nodes tested (pairs of 14-DOPs put to the k-DOP extrusion test).
-  int nodesVisited = 0;
-  /// Support queries run for slab ends (a full 14-DOP is 14; a test that one slab settles
-  /// needs 4, and fewer when other pairs of the same bodies have computed them at the pose).
-  int supportQueries = 0;
-  /// The size of the front the query ended on.
-  int frontSize = 0;
-  /// Piece pairs that survived.
-  int pairsKept = 0;
-  /// BVTT nodes the front climbed back to.
-  int climbs = 0;
-};
-
 /// The slab ends of one body's hierarchy nodes at its poses at the ends of a query's
 /// interval, computed on demand and kept for the next query at the same poses (see the
 /// file comment). Not thread safe; the hierarchy must outlive it.
@@ -103,14 +88,15 @@ class BodyKdops {
   /// they hold their descendants' computed ends (hill climbing on two different hulls may
   /// round differently): the BVH then prunes exactly what the all-pairs test prunes.
   /// Support values are at most \f$\sqrt3 r + |p|_1\f$ in size, r the node's radius about the
-  /// body origin. A support query computed here is counted in `counters`.
-  S value(int i, int k, bool upper, int end, BodyPairCounters& counters) {
+  /// body origin. A support query computed here is counted in `supportQueries`.
+  S value(int i, int k, bool upper, int end, int& supportQueries) {
     // Most reads find the end computed already (by this pair or another of the body's):
     // that path is kept small, so that it is inlined into the slab tests.
     const int b = bankOf_[end];
     const int side = 2 * k + (upper ? 0 : 1);
     if (epochOf_[i][b] == bank_[b].epoch && (known_[i][b] & (1u << side))) return values_[i][14 * b + side];
-    return compute(i, k, upper, b, counters);
+    ++supportQueries;
+    return compute(i, k, side, b);
   }
 
   /// The bound on any point's acceleration of node i over the last `begin`'s motion
@@ -118,16 +104,16 @@ class BodyKdops {
   S acceleration(int i) const { return bound_.pointAcceleration(radius_[i]); }
 
  private:
-  // Slab end (k, upper) of node i in bank b, by one support query; kept for later reads.
-  [[gnu::noinline]] S compute(int i, int k, bool upper, int b, BodyPairCounters& counters) {
+  // Slab end `side` (2k: hi_k, 2k + 1: lo_k) of node i in bank b, by one support query;
+  // kept for later reads.
+  [[gnu::noinline]] S compute(int i, int k, int side, int b) {
     if (epochOf_[i][b] != bank_[b].epoch) {
       epochOf_[i][b] = bank_[b].epoch;
       known_[i][b] = 0;
     }
-    const int side = 2 * k + (upper ? 0 : 1);
+    const bool upper = side % 2 == 0;
     const int slot = 14 * b + side;
     known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
-    ++counters.supportQueries;
     const BvhNode<S>& node = bvh_->node(i);
     const Vector3<S>& d = bank_[b].frame.direction[k];
     const Vector3<S> direction = upper ? d : Vector3<S>(-d);
@@ -136,7 +122,7 @@ class BodyKdops {
     if (bank_[b].freshStart) hints_[i][slot] = node.startFor(direction);
     S v = d.dot(node.hull.support(direction, hints_[i][slot])) + bank_[b].frame.offset[k];
     if (!node.isLeaf()) {
-      const S pad = S(64) * machineEpsilon<S>() * (S(2) * node.hull.boundingRadius() + bank_[b].reach);
+      const S pad = S(64) * machineEpsilon<S>() * (S(2) * radius_[i] + bank_[b].reach);
       v += upper ? pad : -pad;
     }
     values_[i][slot] = v;

@@ -54,6 +54,21 @@ struct PiecePair {
   bool operator<(const PiecePair& o) const { return a < o.a || (a == o.a && b < o.b); }
 };
 
+/// What a body-pair query did, for a scene's statistics.
+struct BodyPairCounters {
+  /// BVTT nodes tested (pairs of 14-DOPs put to the k-DOP extrusion test).
+  int nodesVisited = 0;
+  /// Support queries run for slab ends (a full 14-DOP is 14; a test that one slab settles
+  /// needs 4, and fewer when other pairs of the same bodies have computed them at the pose).
+  int supportQueries = 0;
+  /// The size of the front the query ended on.
+  int frontSize = 0;
+  /// Piece pairs that survived.
+  int pairsKept = 0;
+  /// BVTT nodes the front climbed back to.
+  int climbs = 0;
+};
+
 /// The outcome of a body-pair query.
 enum class BodyPairStatus {
   Disjoint,   ///< every piece pair is proven apart over the interval
@@ -189,7 +204,7 @@ class BodyPairQuery {
     const int k = side / 2;
     const bool bAbove = side % 2 == 0;
     const S scale = S(1) / Kdop14<S>::axisLength(k);
-    BodyPairCounters& c = *counters_;
+    int& c = counters_->supportQueries;
     const auto gap = [&](int end) {
       return bAbove ? (bodyB_->value(b, k, false, end, c) - bodyA_->value(a, k, true, end, c)) * scale
                     : (bodyA_->value(a, k, false, end, c) - bodyB_->value(b, k, true, end, c)) * scale;
