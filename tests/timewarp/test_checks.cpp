@@ -15,11 +15,31 @@ using namespace gjkx;
 
 namespace {
 
+/// A ball about a piece in its body's frame: about its axis-aligned box, which the support
+/// mapping gives exactly (the extreme points along the six axis directions).
+std::pair<Eigen::Vector3d, double> ballAbout(const Shape<double>& piece) {
+  Eigen::Vector3d lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(k);
+    hi[k] = piece.support(axis)[k];
+    lo[k] = piece.support(-axis)[k];
+  }
+  return {(lo + hi) / 2, (hi - lo).norm() / 2};
+}
+
 /// The least referencePieceDistance over every piece pair: what the search must equal.
+/// A pair whose balls are farther apart than the least so far (with a margin for rounding)
+/// cannot be the least, so it is not measured: the answer is the same.
 double allPairs(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b, const Pose<double>& poseB) {
   double least = std::numeric_limits<double>::infinity();
-  for (const auto& pa : a.pieces)
-    for (const auto& pb : b.pieces) least = std::min(least, referencePieceDistance(pa, poseA, pb, poseB));
+  for (const auto& pa : a.pieces) {
+    const auto [centreA, radiusA] = ballAbout(pa);
+    for (const auto& pb : b.pieces) {
+      const auto [centreB, radiusB] = ballAbout(pb);
+      if ((poseA(centreA) - poseB(centreB)).norm() - radiusA - radiusB > least + 1e-9) continue;
+      least = std::min(least, referencePieceDistance(pa, poseA, pb, poseB));
+    }
+  }
   return least;
 }
 

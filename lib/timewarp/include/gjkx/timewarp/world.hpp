@@ -224,7 +224,7 @@ class World {
   void runFixedStep(double T0, double T1, FrameState& frame);
   void runChecks(double T0, double T1, FrameState& frame);
   void settle(double T1, FrameState& frame);
-  double speedBound(int body, const FrameState& frame) const;
+  double relativeSpeedBound(int i, int j, double T0, double T1, const FrameState& frame) const;
 
   Scene scene_;
   WorldSettings settings_;
