@@ -85,6 +85,7 @@ function(gjkx_test stage concept)
   add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${stage}/test_${concept}.cpp)
   target_link_libraries(${name} PRIVATE gjkx::${stage} gjkx_catch_main ${ARG_LINKS})
   gjkx_warnings(${name})
+  target_precompile_headers(${name} REUSE_FROM gjkx_test_pch)
   catch_discover_tests(${name} EXTRA_ARGS --warn NoTests TEST_PREFIX "${stage}/" PROPERTIES LABELS ${stage})
 endfunction()
 
