@@ -1,11 +1,14 @@
 // Mirtich's impulse integration through compression and restitution (see the header).
 #include <gjkx/dynamics/impulse.hpp>
 
+#include <gjkx/brent/root_finder.hpp>
+
 #include <boost/numeric/odeint.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace gjkx {
 namespace {
@@ -259,6 +262,21 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     if (phase == Phase::Restitution && s[2] >= wTarget) ev |= kRestituted;
     return ev;
   };
+  // The same events as one continuous function of the state, g >= 0 exactly when some
+  // event has happened: the largest of zero - |u_t| and -u_t . u_t(start) (sliding has
+  // stopped or turned back), u_n (compression has ended) and w - W_target (restitution has
+  // ended), over the events the phase can meet. Event location finds where g crosses 0.
+  auto eventValue = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
+    double g = -std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d u = c.velocity(s, sig);
+    if (c.friction == Friction::Sliding && !c.onRay && utStart.norm() > c.zero) {
+      const Eigen::Vector2d ut = u.head<2>();
+      g = std::max({g, c.zero - ut.norm(), -ut.dot(utStart)});
+    }
+    if (phase == Phase::Compression) g = std::max(g, u.z());
+    if (phase == Phase::Restitution) g = std::max(g, s[2] - wTarget);
+    return g;
+  };
 
   // Without sliding (frictionless, or stuck: stuck stays stuck, K being constant) the
   // impulse direction d = (d_t, 1) is constant, so u_n grows linearly,
@@ -332,18 +350,24 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     int ev = events(y, sigma, utStart);
     if (ev == kNone) continue;
 
-    // A phase change inside the step: bisect its length on "some event has happened",
-    // redoing the step from its start with the plain Dormand-Prince stepper.
-    double lo = 0, hi = sigma - sigmaPrev;
-    for (int k = 0; k < 100 && hi - lo > 1e-15 * std::max(1.0, sigmaPrev + hi); ++k) {
-      const double mid = 0.5 * (lo + hi);
-      State trial = yPrev;
-      plainStep(trial, sigmaPrev, mid);
-      if (events(trial, sigmaPrev + mid, utStart) != kNone) {
-        hi = mid;
-      } else {
-        lo = mid;
+    // A phase change inside the step: find the step length h where g, measured on the
+    // step redone from its start with the plain Dormand-Prince stepper, crosses 0. Every
+    // trial is a whole Dormand-Prince step, so the root is found by the same Brent's method
+    // as §5's time of impact (root_finder.hpp): superlinear, a handful of trials where
+    // bisection took some fifty. The step ends at the bracket's end where g >= 0, where
+    // some event has happened.
+    const double length = sigma - sigmaPrev;
+    const double gStart = eventValue(yPrev, sigmaPrev, utStart), gEnd = eventValue(y, sigma, utStart);
+    double hi = 0;  // an event already at the start (g >= 0 there) ends the step at once
+    if (gStart < 0) {
+      BrentStepper<double> brent(0.0, gStart, length, gEnd, 1e-15 * std::max(1.0, sigma));
+      while (!brent.converged()) {
+        const double h = brent.next();
+        State trial = yPrev;
+        plainStep(trial, sigmaPrev, h);
+        brent.update(eventValue(trial, sigmaPrev + h, utStart));
       }
+      hi = brent.fRoot() >= 0 ? brent.root() : brent.counterpart();
     }
     y = yPrev;
     plainStep(y, sigmaPrev, hi);
