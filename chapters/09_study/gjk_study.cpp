@@ -30,6 +30,8 @@
 #include "../command_line.hpp"
 #include "gjk_comparisons.hpp"
 
+#include <gjkx/study/peers.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -16,6 +16,8 @@
 #include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
+#include <gjkx/study/peers.hpp>
+
 #if __has_include("gjk_comparisons.hpp")
 #include "gjk_comparisons.hpp"
 #define GJKX_STUDY_SUMMARY_GJK 1

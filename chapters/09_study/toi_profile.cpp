@@ -35,6 +35,9 @@
 #include "callgrind_markers.hpp"
 #include "toi_comparisons.hpp"
 
+#include <gjkx/brent/time_of_impact.hpp>
+#include <gjkx/study/peers_toi.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>

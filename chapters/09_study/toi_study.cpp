@@ -23,6 +23,8 @@
 #include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
+#include <gjkx/study/peers.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
