@@ -9,7 +9,7 @@ set lmargin at screen 0.08
 set rmargin at screen 0.64
 set key at screen 0.655, graph 1 left top Left reverse samplen 2 spacing 1.2
 set style fill solid 0.9 noborder
-set multiplot title "Fig. 6: running time of the torso-plant simulation\n82 bodies (tf/scene.json), float, certified extrusion test, tolerance 0.000345267, 24 frames/s" font ',12'
+set multiplot title "Fig. 6: running time of the torso-plant simulation\n82 bodies (torso/scene.json), float, certified extrusion test, tolerance 0.000345267, 24 frames/s" font ',12'
 set tmargin at screen 0.89
 set bmargin at screen 0.56
 set logscale y
@@ -25,7 +25,7 @@ unset logscale y
 set format x '%g'
 set tmargin at screen 0.50
 set bmargin at screen 0.08
-set yrange [0:26.0058]
+set yrange [0:19.4501]
 set format y '%g'
 set ylabel 'execution / simulation time (linear: the parts)' offset 1,0
 set xlabel 'simulated time (s)'
