@@ -85,9 +85,12 @@ TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[s
 }
 
 TEST_CASE("gjkx_simulate runs the other example scenes without tunnelling", "[simulate]") {
-  for (const char* scene : {"ball_drop.json", "dominoes.json"}) {
-    const fs::path out = freshFolder(scene);
-    const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/" + scene + "\" --out \"" + out.string() + "\" --quiet");
+  // The tori: four closed meshes dropped on a static one, whose prisms once made a node
+  // hull Qhull could not build right (convex_hull.cpp, near duplicates).
+  for (const std::string& scene : {std::string(GJKX_SCENES) + "/ball_drop.json", std::string(GJKX_SCENES) + "/dominoes.json",
+                                  std::string(GJKX_TORSO_SCENES) + "/tori.json"}) {
+    const fs::path out = freshFolder(fs::path(scene).filename().string());
+    const Result r = simulate("\"" + scene + "\" --out \"" + out.string() + "\" --quiet");
     INFO(scene << ": " << r.output);
     CHECK(r.status == 0);
     const auto keys = summary(r.output);

@@ -104,6 +104,39 @@ constexpr long double kFlatUlps = 64;
 constexpr long double kThinFraction = 1e-6L;
 constexpr double kOutsideUlps = 4096;
 
+// Near duplicates. Two input points closer than kWeldFraction of the set's size make
+// Qhull's facets through both as good as round-off over their distance: a facet whose
+// normal comes from an edge 3e-9 long (two prisms on the triangles of one nearly planar
+// quad, moved back along normals 2e-6 rad apart) is tilted by about 1e-7, and Qhull's
+// hull of such a set left a point 2.5e-8 outside (a node of the hierarchy of a torus's
+// prisms). Such points are one point for Qhull: the first of them stands for the others,
+// and the check below allows every input point its distance from the one that stood for it
+// (at most kWeldFraction of the size, far below any tolerance a caller works at).
+constexpr double kWeldFraction = 1e-8;
+
+// The point that stands for each point (its own index, or an earlier point's within
+// `weld`), and the largest distance of a point from the one that stands for it. Points
+// sorted by x are compared only with their neighbours within `weld` along x.
+std::pair<std::vector<int>, double> weldNearDuplicates(const std::vector<Eigen::Vector3d>& points, double weld) {
+  std::vector<int> order(points.size()), standsFor(points.size());
+  for (size_t i = 0; i < points.size(); ++i) order[i] = standsFor[i] = int(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return points[a].x() < points[b].x(); });
+  double farthest = 0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const int i = order[k];
+    if (standsFor[i] != i) continue;  // an earlier point stands for it already
+    for (size_t m = k + 1; m < order.size() && points[order[m]].x() - points[i].x() <= weld; ++m) {
+      const int j = order[m];
+      if (standsFor[j] != j) continue;
+      if (const double d = (points[j] - points[i]).norm(); d <= weld) {
+        standsFor[j] = i;
+        farthest = std::max(farthest, d);
+      }
+    }
+  }
+  return {standsFor, farthest};
+}
+
 using LVec = Eigen::Matrix<long double, 3, 1>;
 
 struct SetShape {
@@ -195,9 +228,21 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
   if (shape.flat) fail(field, "all points lie in one plane, to within round-off (a solid needs volume)");
   // The coordinates Qhull sees: the points, or a thin set stretched to a fat one (see measure()).
   const std::vector<Eigen::Vector3d>& seen = shape.thin ? shape.stretched : points;
+  double size = 0;
+  for (const auto& p : seen) size = std::max(size, p.cwiseAbs().maxCoeff());
+  // Qhull sees one point for each group of near duplicates (see kWeldFraction); `qhullId`
+  // maps its point ids back to the input's.
+  const auto [standsFor, welded] = weldNearDuplicates(seen, kWeldFraction * size);
+  std::vector<int> qhullId;
   std::vector<double> coords;
   coords.reserve(points.size() * 3);
-  for (const auto& p : seen) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  for (size_t i = 0; i < seen.size(); ++i)
+    if (standsFor[i] == int(i)) {
+      qhullId.push_back(int(i));
+      coords.insert(coords.end(), {seen[i].x(), seen[i].y(), seen[i].z()});
+    }
+  if (qhullId.size() < 4)
+    fail(field, "a solid needs at least 4 points apart, got " + std::to_string(qhullId.size()));
 
   ConvexHull hull;
   std::map<int, int> hullIndexOfPoint;
@@ -211,7 +256,7 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
       int k = 0;
       vertexT *vertex, **vertexp;
       FOREACHvertex_(facet->vertices) {
-        if (k < 3) tri[k] = qh_pointid(qh, vertex->point);
+        if (k < 3) tri[k] = qhullId[qh_pointid(qh, vertex->point)];
         ++k;
       }
       if (k != 3) continue;  // Qt makes every facet a triangle
@@ -251,9 +296,7 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
     for (int v = 0; v < int(hull.vertices.size()); ++v) c += seenVertex(v);
     return Eigen::Vector3d(c / double(hull.vertices.size()));
   }();
-  double size = 0;
-  for (const auto& p : seen) size = std::max(size, p.cwiseAbs().maxCoeff());
-  const double outsideAllowed = kOutsideUlps * std::numeric_limits<double>::epsilon() * size;
+  const double roundOffAllowed = kOutsideUlps * std::numeric_limits<double>::epsilon() * size;
   std::set<std::pair<int, int>> edges;
   for (auto tri : facets) {
     for (int& id : tri) id = remap[id];
@@ -269,7 +312,7 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
     // only as good as |e1| |e2| / |e1 x e2| round-offs: its allowance grows by that factor.
     if (const double length = normal.norm(); length > 0) {
       const double edges1 = (seenVertex(tri[1]) - a).norm() * (seenVertex(tri[2]) - a).norm();
-      const double allowed = outsideAllowed * std::max(1.0, edges1 / length);
+      const double allowed = roundOffAllowed * std::max(1.0, edges1 / length) + welded;
       for (size_t i = 0; i < seen.size(); ++i)
         if (const double outside = normal.dot(seen[i] - a) / length; outside > allowed)
           fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + toText(outside) +
