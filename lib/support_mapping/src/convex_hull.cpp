@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -202,6 +203,81 @@ SetShape measure(const std::vector<Eigen::Vector3d>& points) {
   return shape;
 }
 
+// The input points in small groups, each in a ball, for the check that every input point
+// lies inside every boundary triangle's plane: a plane with a whole ball on its inner side
+// needs none of the ball's points looked at. Checking every point against every triangle
+// took two thirds of the time of a 14,000-point hull; a triangle's plane now meets only
+// the balls about its own part of the surface. Groups are runs of kGroupSize points in
+// Morton order (coordinates quantized to 2^21 steps across the set's box), so each is
+// compact in space.
+class PointBalls {
+ public:
+  explicit PointBalls(const std::vector<Eigen::Vector3d>& points) : points_(points) {
+    Eigen::Vector3d lo = points.front(), hi = lo;
+    for (const auto& p : points) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    const Eigen::Vector3d extent = (hi - lo).cwiseMax(Eigen::Vector3d::Constant(1e-300));
+    std::vector<std::pair<std::uint64_t, int>> keyed(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector3d q = ((points[i] - lo).cwiseQuotient(extent) * double((1 << 21) - 1)).array().round();
+      keyed[i] = {morton(std::uint64_t(q.x()), std::uint64_t(q.y()), std::uint64_t(q.z())), int(i)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (const auto& entry : keyed) order_.push_back(entry.second);
+    for (size_t first = 0; first < order_.size(); first += kGroupSize) {
+      Ball ball;
+      ball.first = int(first);
+      ball.last = int(std::min(order_.size(), first + kGroupSize));
+      Eigen::Vector3d blo = points[order_[first]], bhi = blo;
+      for (int k = ball.first; k < ball.last; ++k) {
+        blo = blo.cwiseMin(points[order_[k]]);
+        bhi = bhi.cwiseMax(points[order_[k]]);
+      }
+      ball.centre = (blo + bhi) / 2;
+      for (int k = ball.first; k < ball.last; ++k)
+        ball.radius = std::max(ball.radius, (points[order_[k]] - ball.centre).norm());
+      ball.radius = ball.radius * (1 + 1e-12) + 1e-300;  // rounded up: a bound, never short
+      balls_.push_back(ball);
+    }
+  }
+  // True when every point p has unit.(p - a) <= allowed: for each ball, either the ball is
+  // inside by its centre's height plus its radius, or its points are looked at one by one.
+  bool allInside(const Eigen::Vector3d& unit, const Eigen::Vector3d& a, double allowed) const {
+    for (const Ball& ball : balls_) {
+      if (unit.dot(ball.centre - a) + ball.radius <= allowed) continue;
+      for (int k = ball.first; k < ball.last; ++k)
+        if (unit.dot(points_[order_[k]] - a) > allowed) return false;
+    }
+    return true;
+  }
+
+ private:
+  static constexpr size_t kGroupSize = 16;
+  struct Ball {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double radius = 0;
+    int first = 0, last = 0;  // its points: order_[first, last)
+  };
+  // Interleaves the low 21 bits of x, y and z.
+  static std::uint64_t morton(std::uint64_t x, std::uint64_t y, std::uint64_t z) {
+    auto spread = [](std::uint64_t v) {
+      v &= 0x1fffff;
+      v = (v | v << 32) & 0x1f00000000ffffULL;
+      v = (v | v << 16) & 0x1f0000ff0000ffULL;
+      v = (v | v << 8) & 0x100f00f00f00f00fULL;
+      v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+      v = (v | v << 2) & 0x1249249249249249ULL;
+      return v;
+    };
+    return spread(x) | spread(y) << 1 | spread(z) << 2;
+  }
+  const std::vector<Eigen::Vector3d>& points_;
+  std::vector<int> order_;
+  std::vector<Ball> balls_;
+};
+
 // Fills firstNeighbour/neighbours from a set of undirected edges.
 void buildAdjacency(ConvexHull& hull, const std::set<std::pair<int, int>>& edges) {
   const int n = static_cast<int>(hull.vertices.size());
@@ -297,6 +373,7 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
     return Eigen::Vector3d(c / double(hull.vertices.size()));
   }();
   const double roundOffAllowed = kOutsideUlps * std::numeric_limits<double>::epsilon() * size;
+  const PointBalls balls(seen);
   std::set<std::pair<int, int>> edges;
   for (auto tri : facets) {
     for (int& id : tri) id = remap[id];
@@ -313,11 +390,13 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
     if (const double length = normal.norm(); length > 0) {
       const double edges1 = (seenVertex(tri[1]) - a).norm() * (seenVertex(tri[2]) - a).norm();
       const double allowed = roundOffAllowed * std::max(1.0, edges1 / length) + welded;
-      for (size_t i = 0; i < seen.size(); ++i)
-        if (const double outside = normal.dot(seen[i] - a) / length; outside > allowed)
-          fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + toText(outside) +
-                          " (of a set " + std::to_string(size) +
-                          " across): the set is too flat for a hull in double; give it volume");
+      const Eigen::Vector3d unit = normal / length;
+      if (!balls.allInside(unit, a, allowed))
+        for (size_t i = 0; i < seen.size(); ++i)  // the first point outside, by index
+          if (const double outside = normal.dot(seen[i] - a) / length; outside > allowed)
+            fail(field, "Qhull's hull leaves point " + std::to_string(i) + " outside by " + toText(outside) +
+                            " (of a set " + std::to_string(size) +
+                            " across): the set is too flat for a hull in double; give it volume");
     }
     hull.triangles.push_back(tri);
     for (int e = 0; e < 3; ++e) {
