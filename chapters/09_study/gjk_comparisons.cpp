@@ -4,6 +4,11 @@
 
 #include <gjkx/study/peers.hpp>
 
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+
 namespace gjkx::study::gjk_comparison {
 namespace detail {
 

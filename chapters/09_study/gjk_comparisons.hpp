@@ -36,11 +36,9 @@
 #include <gjkx/supporting_distance/intersection.hpp>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
+#include <functional>
 #include <limits>
-#include <map>
-#include <set>
+#include <random>
 #include <string>
 #include <vector>
 

@@ -11,6 +11,16 @@
 #include <gjkx/extrusion/sweeping.hpp>
 #include <gjkx/support_mapping/placed.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <variant>
+
 #ifndef GJKX_CCD_QUERIES_DIR
 #define GJKX_CCD_QUERIES_DIR ""
 #endif

@@ -32,17 +32,9 @@
 #include <gjkx/study/our_settings.hpp>
 #include <gjkx/study/workloads.hpp>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <functional>
+#include <cstdint>
 #include <limits>
-#include <map>
-#include <numeric>
 #include <string>
-#include <variant>
 #include <vector>
 
 namespace gjkx::study {

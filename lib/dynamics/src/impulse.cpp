@@ -249,33 +249,32 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     c.tangentialStop();
   };
 
-  // The events that end the current stretch of the integration, at a state.
+  // The events that end the current stretch of the integration, each a continuous function
+  // of the state that is >= 0 exactly when its event has happened (-inf for an event the
+  // phase cannot meet): zero - |u_t| and -u_t . u_t(start), the larger of the two (sliding
+  // has stopped or turned back); u_n (compression has ended); w - W_target (restitution has
+  // ended). Their largest, g, is >= 0 exactly when some event has happened: event location
+  // finds where g crosses 0.
   enum Event { kNone = 0, kStop = 1, kCompressed = 2, kRestituted = 4 };
-  auto events = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
-    int ev = kNone;
-    const Eigen::Vector3d u = c.velocity(s, sig);
-    if (c.friction == Friction::Sliding && !c.onRay && utStart.norm() > c.zero) {
-      const Eigen::Vector2d ut = u.head<2>();
-      if (ut.norm() <= c.zero || ut.dot(utStart) <= 0) ev |= kStop;
+  struct EventValues {
+    double stop, compressed, restituted;
+    double g() const { return std::max({stop, compressed, restituted}); }
+    int flags() const {
+      return (stop >= 0 ? kStop : kNone) | (compressed >= 0 ? kCompressed : kNone) |
+             (restituted >= 0 ? kRestituted : kNone);
     }
-    if (phase == Phase::Compression && u.z() >= 0) ev |= kCompressed;
-    if (phase == Phase::Restitution && s[2] >= wTarget) ev |= kRestituted;
-    return ev;
   };
-  // The same events as one continuous function of the state, g >= 0 exactly when some
-  // event has happened: the largest of zero - |u_t| and -u_t . u_t(start) (sliding has
-  // stopped or turned back), u_n (compression has ended) and w - W_target (restitution has
-  // ended), over the events the phase can meet. Event location finds where g crosses 0.
-  auto eventValue = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
-    double g = -std::numeric_limits<double>::infinity();
+  auto eventValues = [&](const State& s, double sig, const Eigen::Vector2d& utStart) {
+    constexpr double never = -std::numeric_limits<double>::infinity();
+    EventValues v{never, never, never};
     const Eigen::Vector3d u = c.velocity(s, sig);
     if (c.friction == Friction::Sliding && !c.onRay && utStart.norm() > c.zero) {
       const Eigen::Vector2d ut = u.head<2>();
-      g = std::max({g, c.zero - ut.norm(), -ut.dot(utStart)});
+      v.stop = std::max(c.zero - ut.norm(), -ut.dot(utStart));
     }
-    if (phase == Phase::Compression) g = std::max(g, u.z());
-    if (phase == Phase::Restitution) g = std::max(g, s[2] - wTarget);
-    return g;
+    if (phase == Phase::Compression) v.compressed = u.z();
+    if (phase == Phase::Restitution) v.restituted = s[2] - wTarget;
+    return v;
   };
 
   // Without sliding (frictionless, or stuck: stuck stays stuck, K being constant) the
@@ -347,7 +346,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
       c.leaveRay(c.velocity(y, sigma).head<2>());
       if (!c.onRay) c(y, dydsigma, sigma);  // the friction law changed form: a fresh derivative
     }
-    int ev = events(y, sigma, utStart);
+    int ev = eventValues(y, sigma, utStart).flags();
     if (ev == kNone) continue;
 
     // A phase change inside the step: find the step length h where g, measured on the
@@ -357,7 +356,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     // bisection took some fifty. The step ends at the bracket's end where g >= 0, where
     // some event has happened.
     const double length = sigma - sigmaPrev;
-    const double gStart = eventValue(yPrev, sigmaPrev, utStart), gEnd = eventValue(y, sigma, utStart);
+    const double gStart = eventValues(yPrev, sigmaPrev, utStart).g(), gEnd = eventValues(y, sigma, utStart).g();
     double hi = 0;  // an event already at the start (g >= 0 there) ends the step at once
     if (gStart < 0) {
       BrentStepper<double> brent(0.0, gStart, length, gEnd, 1e-15 * std::max(1.0, sigma));
@@ -367,14 +366,14 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
         const double h = brent.next();
         State trial = yPrev;
         plainStep(trial, sigmaPrev, h);
-        brent.update(eventValue(trial, sigmaPrev + h, utStart));
+        brent.update(eventValues(trial, sigmaPrev + h, utStart).g());
       }
       hi = brent.fRoot() >= 0 ? brent.root() : brent.counterpart();
     }
     y = yPrev;
     plainStep(y, sigmaPrev, hi);
     sigma = sigmaPrev + hi;
-    ev = events(y, sigma, utStart);
+    ev = eventValues(y, sigma, utStart).flags();
 
     if (ev & kStop) stopSliding();
     if (ev & kCompressed) {

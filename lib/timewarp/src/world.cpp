@@ -1052,8 +1052,6 @@ void World::settle(double T1, FrameState& frame) {
 // ---------------------------------------------------------------------------------------
 // The independent checks (checks.hpp)
 
-/// How fast any point of body b moved during the frame: |v| + |w| r over its pieces, the
-/// rate at which its distance to anything can change (with a few percent to spare).
 // How fast the distance of bodies i and j can change over a frame (the Lipschitz bound of
 // the tunnelling check). A point of body b at x moves at v_b + w_b x (x - c_b), so the
 // distance changes at most as fast as the largest relative speed of two points,
@@ -1068,12 +1066,15 @@ void World::settle(double T1, FrameState& frame) {
 // The spin part. Over a piece the spin's size is bounded by its ends' largest (torque-free:
 // |L| is fixed, but |w| within its ends' range is not guaranteed), so spare 10%.
 double World::relativeSpeedBound(int i, int j, double T0, double T1, const FrameState& frame) const {
-  // A body's pieces this frame (the frame's path when it was not struck).
-  auto piecesOf = [&](int b) {
+  // A body's pieces this frame (the frame's path, held in `unstruck`, when it was not struck).
+  auto piecesOf = [&](int b, std::vector<Piece>& unstruck) -> const std::vector<Piece>& {
     if (!frame.pieces[b].empty()) return frame.pieces[b];
-    return std::vector<Piece>{Piece{bodies_[b].path, T1}};
+    unstruck = {Piece{bodies_[b].path, T1}};
+    return unstruck;
   };
-  const std::vector<Piece> piecesI = piecesOf(i), piecesJ = piecesOf(j);
+  std::vector<Piece> unstruckI, unstruckJ;
+  const std::vector<Piece>& piecesI = piecesOf(i, unstruckI);
+  const std::vector<Piece>& piecesJ = piecesOf(j, unstruckJ);
   double spin = 0;
   for (const auto& [b, pieces] : {std::pair{i, &piecesI}, std::pair{j, &piecesJ}}) {
     double w = 0;
