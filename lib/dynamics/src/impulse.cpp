@@ -360,9 +360,10 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     double hi = 0;  // an event already at the start (g >= 0 there) ends the step at once
     if (gStart < 0) {
       BrentStepper<double> brent(0.0, gStart, length, gEnd, 1e-15 * std::max(1.0, sigma));
-      // Brent's method converges within a bounded number of steps (its bisections halve the
-      // bracket); the cap only guards that, and the bracket it leaves is still valid.
-      for (int k = 0; k < 200 && !brent.converged(); ++k) {
+      // Brent's method takes at most about log2(length / tolerance)^2 steps (Brent 1973:
+      // its bisections halve the bracket whenever interpolation is slow). Here length <= sigma,
+      // so length / tolerance <= 1e15 < 2^50 and that is at most 2,500: the cap is never met.
+      for (int k = 0; k < 100 * 100 && !brent.converged(); ++k) {
         const double h = brent.next();
         State trial = yPrev;
         plainStep(trial, sigmaPrev, h);
