@@ -18,7 +18,9 @@
 //   error): one row per method, the median time per query with a whisker to the 99th
 //   percentile, the wrong answers and unanswered queries counted beside it.
 // - gjk-distance-summary.md, gjk-boolean-summary.md, gjk-float-summary.md: the key figures
-//   the docs page quotes (ratios to the fastest peer, largest errors, wrong answers).
+//   the docs page quotes (ratios to the fastest peer, largest errors, wrong answers);
+// - gjk-goals.md: the study's speed goals for GJK, each with this run's figure and whether
+//   it is met.
 // --replot measures nothing, redraws the plots from the CSV files already in DIR and
 // writes the key figures again from them.
 // A full run takes about 25 s of processor time (51 s of wall time on the shared 2-core
@@ -465,7 +467,7 @@ void plotGroup(const std::string& folder, const Group& g, const std::vector<GjkR
     for (const auto& p : points) {
       const GjkRow& r = *p.row;
       char line[640];
-      std::snprintf(line, sizeof line, "%d,%s,%d,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%.4g,%.4g,%s,%.5g,%.5g,%d\n", p.panel, shapes[p.panel].c_str(),
+      std::snprintf(line, sizeof line, "%d,%s,%d,%s,%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,%.4g,%.4g,%s,%.5g,%.5g,%d\n", p.panel, shapes[p.panel].c_str(),
                     p.method, r.method.c_str(), r.warmStart.c_str(), r.medianNs, r.p99Ns, r.errorMedian, r.errorMax, r.judged, r.wrong, r.failures,
                     p.y, p.yMax, p.label.c_str(), p.labelX, p.labelY, r.queries);
       csv << line;
@@ -685,11 +687,58 @@ void writeFloatSummary(const std::string& path, const std::vector<GjkRow>& rows)
      << " times that of double (computed by `gjk_study` from the `gjk-*.csv` files).\n";
 }
 
+// gjk-goals.md: the study's speed goals for GJK, each against this run: ours-double's
+// median time, the method the goal names, their ratio or the bound, and whether it is met.
+void writeGoals(const std::string& path, const std::vector<GjkRow>& rows) {
+  std::ofstream md(path);
+  mdTitle(md, true, "GJK: the speed goals against this run");
+  md << "| goal | workload | ours-double ns | against, ns | ours / against | met |\n";
+  md << "| --- | --- | ---: | --- | ---: | :---: |\n";
+  int met = 0, goals = 0;
+  auto row = [&](const std::string& goal, const std::string& workload, const GjkRow& ours, const std::string& against, double againstNs,
+                 bool ok) {
+    ++goals;
+    met += ok;
+    md << "| " << goal << " | " << workload << " | " << format("%.0f", ours.medianNs) << " | " << against << format(" %.0f", againstNs)
+       << " | " << format("%.2f", ours.medianNs / againstNs) << " | " << (ok ? "yes" : "**no**") << " |\n";
+  };
+  // Warm boolean queries on 100-vertex polytopes under 50 ns.
+  const std::string warm100 = workloadName(true, "polytope100", true);
+  if (const GjkRow* ours = rowOf(rows, warm100, "ours-double"))
+    row("warm boolean, 100-vertex polytopes, under 50 ns", warm100, *ours, "the bound", 50, ours->medianNs < 50);
+  // Spheres and capsules within 1.5 times FCL's closed forms (its faster solver's row).
+  for (const char* shape : {"sphere", "capsule"})
+    for (const bool boolean : {false, true})
+      for (const bool warm : {false, true}) {
+        const std::string w = workloadName(boolean, shape, warm);
+        const GjkRow* ours = rowOf(rows, w, "ours-double");
+        const GjkRow* fcl = nullptr;
+        for (const char* m : {"fcl-libccd", "fcl-indep"})
+          if (const GjkRow* r = rowOf(rows, w, m); r && (!fcl || r->medianNs < fcl->medianNs)) fcl = r;
+        if (!ours || !fcl) continue;
+        const double ratio = ours->medianNs / fcl->medianNs;
+        row("spheres and capsules within 1.5 times FCL's closed forms", w, *ours, fcl->method, fcl->medianNs, ratio <= 1.5);
+      }
+  // Cold boolean queries on boxes and 12-vertex polytopes at or below libccd's MPR.
+  for (const char* shape : {"box", "polytope12"}) {
+    const std::string w = workloadName(true, shape, false);
+    const GjkRow* ours = rowOf(rows, w, "ours-double");
+    const GjkRow* mpr = rowOf(rows, w, "ccd-mpr");
+    if (!ours || !mpr) continue;
+    const double ratio = ours->medianNs / mpr->medianNs;
+    row("cold boolean at or below libccd's MPR", w, *ours, mpr->method, mpr->medianNs, ratio <= 1);
+  }
+  md << "\n<br>" << met << " of " << goals << " met in this run.\n";
+  mdNotes(md, "Computed by `gjk_study` (also with `--replot`) from the `gjk-*.csv` files of the run in the GJK table. "
+              "Median times per query; *ours / against*: ours-double's divided by the method's the goal names (for the 50 ns goal, by 50 ns).");
+}
+
 void writeSummaries(const std::string& folder, const std::vector<GjkRow>& rows) {
   writeDistanceSummary(folder + "/gjk-distance-summary.md", rows);
   writeBooleanSummary(folder + "/gjk-boolean-summary.md", rows);
   writeFloatSummary(folder + "/gjk-float-summary.md", rows);
-  std::printf("wrote %s/gjk-distance-summary.md, gjk-boolean-summary.md and gjk-float-summary.md\n", folder.c_str());
+  writeGoals(folder + "/gjk-goals.md", rows);
+  std::printf("wrote %s/gjk-distance-summary.md, gjk-boolean-summary.md, gjk-float-summary.md and gjk-goals.md\n", folder.c_str());
 }
 
 }  // namespace

@@ -15,8 +15,9 @@
 // --replot measures nothing and redraws the plots from the CSV files already in DIR. The tables are also written
 // into DIR as markdown, for the docs page of the study: toi-workloads.md, toi-table.md,
 // toi-float-vs-double.md and toi-ccd.md; and the key figures the page quotes (misses and
-// false alarms per method, ours against the peers' time) in toi-summary.md, which --replot
-// writes again from the CSV files.
+// false alarms per method, ours against the peers' time) in toi-summary.md, and the study's
+// speed goals against the run in toi-goals.md, both of which --replot writes again from the
+// CSV files.
 // 120 queries per workload (40 with --quick); a full run takes about 1.5 minutes on an idle
 // 2-core machine (references about 30 s of it), --quick about 20 s. Regenerate the kept
 // study figures with `build/chapters/09_study/toi_study --out figures/study`.
@@ -526,6 +527,56 @@ void writeSummary(const std::string& path, const std::vector<ToiRow>& rows) {
               "Times: median per query (us); errors: `|t - t_ref|` in units of the interval; *ours / ...*: ratio of the median times.");
 }
 
+// toi-goals.md: the study's speed goals for the time of impact, each against this run:
+// ours (double, tolerance 1e-7) against the method the goal names, by median time, with
+// both errors where the goal asks for equal or lower error.
+void writeGoals(const std::string& path, const std::vector<ToiRow>& rows) {
+  std::ofstream md(path);
+  mdTitle(md, true, "Time of impact: the speed goals against this run", "");
+  md << "| goal | workload | ours us | against, us | ours / against | error median: ours, against | met |\n";
+  md << "| --- | --- | ---: | --- | ---: | --- | :---: |\n";
+  int met = 0, goals = 0;
+  for (const auto& w : workloadsOf(rows)) {
+    const ToiRow* ours = findRow(rows, w, "ours", "tol=1e-7", "double");
+    if (!ours) continue;
+    // At most a third of FCL's conservative advancement's time, at equal or lower error (its
+    // misses count against it: its error is over the hits it found).
+    if (const ToiRow* ca = findRow(rows, w, "FCL CA", "", "double")) {
+      const double ratio = ours->medianUs / ca->medianUs;
+      const bool error = ours->errMedian <= ca->errMedian || ca->misses > ours->misses;
+      const bool ok = ratio <= 1.0 / 3 && error;
+      ++goals;
+      met += ok;
+      md << "| a third of FCL's conservative advancement, at equal or lower error | " << w << " | " << fmt("%.2f", ours->medianUs) << " | "
+         << ca->label() << " " << fmt("%.2f", ca->medianUs) << " | " << fmt("%.2f", ratio) << " | " << fmt("%.1e", ours->errMedian) << ", "
+         << fmt("%.1e", ca->errMedian) << (ca->misses ? " (" + std::to_string(ca->misses) + " misses)" : "") << " | "
+         << (ok ? "yes" : "**no**") << " |\n";
+    }
+    // At or below Bullet on ballistic and screw motion.
+    if (w == "ballistic" || w.rfind("screw", 0) == 0)
+      if (const ToiRow* bullet = findRow(rows, w, "Bullet", "", "float")) {
+        const double ratio = ours->medianUs / bullet->medianUs;
+        const bool ok = ratio <= 1;
+        ++goals;
+        met += ok;
+        md << "| at or below Bullet | " << w << " | " << fmt("%.2f", ours->medianUs) << " | " << bullet->label() << " "
+           << fmt("%.2f", bullet->medianUs) << " | " << fmt("%.2f", ratio) << " | " << fmt("%.1e", ours->errMedian) << ", "
+           << fmt("%.1e", bullet->errMedian) << (bullet->misses ? " (" + std::to_string(bullet->misses) + " misses)" : "") << " | "
+           << (ok ? "yes" : "**no**") << " |\n";
+      }
+    // The planar set: no ratio to reach; the docs page says why Box2D is faster.
+    if (const ToiRow* box2d = findRow(rows, w, "Box2D", "", "float"))
+      md << "| Box2D on the planar set: say why it is faster | " << w << " | " << fmt("%.2f", ours->medianUs) << " | " << box2d->label() << " "
+         << fmt("%.2f", box2d->medianUs) << " | " << fmt("%.2f", ours->medianUs / box2d->medianUs) << " | " << fmt("%.1e", ours->errMedian)
+         << ", " << fmt("%.1e", box2d->errMedian) << (box2d->misses ? " (" + std::to_string(box2d->misses) + " misses)" : "")
+         << " | (see the text) |\n";
+  }
+  md << "\n<br>" << met << " of " << goals << " met in this run.\n";
+  mdNotes(md, "Computed by `toi_study` (also with `--replot`) from the `toi-<workload>.csv` files of the run in the time-of-impact table. "
+              "Ours: the paper's solver in double at tolerance 1e-7. Times: median per query (us); *ours / against*: their ratio; "
+              "errors: median `|t - t_ref|` over the hits each reports, in units of the interval.");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -549,7 +600,8 @@ int main(int argc, char** argv) {
       all.insert(all.end(), rows.begin(), rows.end());
     }
     writeSummary(o.out + "/toi-summary.md", all);
-    std::printf("wrote %s/toi-summary.md\n", o.out.c_str());
+    writeGoals(o.out + "/toi-goals.md", all);
+    std::printf("wrote %s/toi-summary.md and toi-goals.md\n", o.out.c_str());
     return 0;
   }
   std::printf("toi_study: peers found:");
@@ -601,7 +653,8 @@ int main(int argc, char** argv) {
   writeFloatVsDouble(o.out + "/toi-float-vs-double.md", o, results.rows);
   writeCcd(o.out + "/toi-ccd.md", o, results);
   writeSummary(o.out + "/toi-summary.md", results.rows);
-  std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md, toi-ccd.md and toi-summary.md\n", o.out.c_str());
+  writeGoals(o.out + "/toi-goals.md", results.rows);
+  std::printf("wrote %s/toi-workloads.md, toi-table.md, toi-float-vs-double.md, toi-ccd.md, toi-summary.md and toi-goals.md\n", o.out.c_str());
 
   for (const auto& w : results.workloads) plotWorkload(o.out, w.name, int(w.queries.size()), results.rows, true, haveGnuplot);
   return 0;
