@@ -117,7 +117,7 @@ void writeWorkloadCsv(const std::string& base, const std::vector<std::string>& c
       // Points labelled with their setting: ours in double, and the peers' settings.
       const bool labelled = (r->family == "ours" && r->scalar == "double") || (!r->ours && r->setting != "-");
       char line[512];
-      std::snprintf(line, sizeof line, "%zu,%s,%s,%s,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%d,%.4g,%s,%d\n", k, r->family.c_str(), r->setting.c_str(),
+      std::snprintf(line, sizeof line, "%zu,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%d,%d,%.4g,%s,%d\n", k, r->family.c_str(), r->setting.c_str(),
                     r->scalar.c_str(), r->medianUs, r->p99Us, r->errMedian, r->errMax, r->misses, r->refHits, r->falseAlarms,
                     r->clearMisses, y, labelled ? r->setting.c_str() : "", r->queries);
       csv << line;

@@ -13,7 +13,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [82.2768:10873.7]
+set xrange [82.2857:10875.1]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'box (256 queries)' offset 0,-0.6
@@ -25,14 +25,14 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==0 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $11==0 && $12==0 ? 2681.2 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==0 && ($11>0 || $12>0) ? 2681.2 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && $11==0 && $12==0 ? 2681.53 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==0 && ($11>0 || $12>0) ? 2681.53 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set lmargin at screen 0.406667
 set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('50' 50, '100' 100, '200' 200, '500' 500)
-set xrange [33.5268:1948.01]
+set xrange [33.5286:1947.55]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ours-curved' 7, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'sphere (256 queries)' offset 0,-0.6
@@ -44,14 +44,14 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==1 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $11==0 && $12==0 ? 607.931 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==1 && ($11>0 || $12>0) ? 607.931 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && $11==0 && $12==0 ? 607.838 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==1 && ($11>0 || $12>0) ? 607.838 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set lmargin at screen 0.74
 set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [43.8393:3.20583e+07]
+set xrange [43.8429:3.20631e+07]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ours-curved' 7, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'capsule (256 queries)' offset 0,-0.6
@@ -63,14 +63,14 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==2 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $11==0 && $12==0 ? 668199 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==2 && ($11>0 || $12>0) ? 668199 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && $11==0 && $12==0 ? 668285 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==2 && ($11>0 || $12>0) ? 668285 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set lmargin at screen 0.0733333
 set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [178.393:14688.8]
+set xrange [178.429:14690.1]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope12 (256 queries)' offset 0,-0.6
@@ -82,14 +82,14 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==3 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $11==0 && $12==0 ? 4148.05 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==3 && ($11>0 || $12>0) ? 4148.05 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && $11==0 && $12==0 ? 4148.57 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==3 && ($11>0 || $12>0) ? 4148.57 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set lmargin at screen 0.406667
 set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [581.652:9.37457e+06]
+set xrange [581.643:9.37515e+06]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope100 (256 queries)' offset 0,-0.6
@@ -101,14 +101,14 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==4 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $11==0 && $12==0 ? 583260 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==4 && ($11>0 || $12>0) ? 583260 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && $11==0 && $12==0 ? 583283 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==4 && ($11>0 || $12>0) ? 583283 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set lmargin at screen 0.74
 set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('10000' 10000, '100000' 100000)
-set xrange [1305.49:1.09172e+07]
+set xrange [1305.71:1.0917e+07]
 set yrange [7.6:-0.6]
 set ytics ('ours-double' 0, 'ours-float' 1, 'ccd-gjk' 2, 'ccd-mpr' 3, 'fcl-libccd' 4, 'fcl-indep' 5, 'bullet-gjk-dist' 6) font ',9'
 set title 'polytope1000 (256 queries)' offset 0,-0.6
@@ -120,8 +120,8 @@ plot 'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==0 ? $6 : NaN):3:6:7 with 
      'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==5 ? $6 : NaN):3:6:7 with xerrorbars pt 11 ps 1.5 lw 1.5 lc rgb '#e377c2' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==6 ? $6 : NaN):3:6:7 with xerrorbars pt 15 ps 1.5 lw 1.5 lc rgb '#2ca02c' notitle, \
      'gjk-boolean-cold.csv' skip 1 using ($1==5 && $3==7 ? $6 : NaN):3:6:7 with xerrorbars pt 13 ps 1.5 lw 1.5 lc rgb '#17becf' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $11==0 && $12==0 ? 819799 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
-     'gjk-boolean-cold.csv' skip 1 using ($1==5 && ($11>0 || $12>0) ? 819799 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && $11==0 && $12==0 ? 819830 : NaN):3:(sprintf('%d/%d wrong', $11, $10)) with labels left font ',9' tc rgb '#777777' notitle, \
+     'gjk-boolean-cold.csv' skip 1 using ($1==5 && ($11>0 || $12>0) ? 819830 : NaN):3:(sprintf('%d/%d wrong%s', $11, $10, $12>0 ? sprintf(', %d no answer', $12) : '')) with labels left font ',9:Bold' tc rgb '#c00000' notitle
 set label 1 "Times over batches of queries timed together. Judged: the queries whose reference distance is 0 or above 5e-04 (closer pairs are touching within the methods' tolerances)." at screen 0.5,0.06 center font ',10'
 unset border
 unset tics

@@ -37,7 +37,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('50' 50, '100' 100, '200' 200)
-set xrange [27.4771:422.062]
+set xrange [27.4754:422.031]
 set yrange [2e-19:10]
 set title 'sphere (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -59,7 +59,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [38.1406:37508.5]
+set xrange [38.1441:37505.1]
 set yrange [2e-19:10]
 set title 'capsule (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -81,7 +81,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '2000' 2000)
-set xrange [679.761:3783.25]
+set xrange [679.77:3783.3]
 set yrange [2e-19:10]
 set title 'polytope12 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -103,7 +103,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [1529.69:25279.5]
+set xrange [1529.87:25274]
 set yrange [2e-19:10]
 set title 'polytope100 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -125,7 +125,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('5000' 5000, '10000' 10000, '20000' 20000, '50000' 50000, '100000' 100000, '200000' 200000)
-set xrange [3463.89:327389]
+set xrange [3463.98:327404]
 set yrange [2e-19:10]
 set title 'polytope1000 (256 queries)' offset 0,-0.6
 plot 'gjk-distance-cold.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \

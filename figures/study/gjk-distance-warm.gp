@@ -15,7 +15,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('200' 200, '500' 500, '1000' 1000, '2000' 2000)
-set xrange [187.429:2133.29]
+set xrange [187.464:2133.19]
 set yrange [2e-19:10]
 set title 'box (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==0 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -37,7 +37,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [27.4771:10188.7]
+set xrange [27.4754:10186.8]
 set yrange [2e-19:10]
 set title 'sphere (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==1 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -59,7 +59,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.585
 set tmargin at screen 0.922
 set xtics ('100' 100, '1000' 1000, '10000' 10000)
-set xrange [40.3087:17524.5]
+set xrange [40.3104:17526.5]
 set yrange [2e-19:10]
 set title 'capsule (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==2 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -81,7 +81,7 @@ set rmargin at screen 0.323333
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000)
-set xrange [280.966:4060.89]
+set xrange [280.984:4061.01]
 set yrange [2e-19:10]
 set title 'polytope12 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==3 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -103,7 +103,7 @@ set rmargin at screen 0.656667
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('500' 500, '1000' 1000, '2000' 2000, '5000' 5000, '10000' 10000, '20000' 20000)
-set xrange [386.406:32413.3]
+set xrange [386.397:32412.4]
 set yrange [2e-19:10]
 set title 'polytope100 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==4 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \
@@ -125,7 +125,7 @@ set rmargin at screen 0.99
 set bmargin at screen 0.17
 set tmargin at screen 0.507
 set xtics ('1000' 1000, '10000' 10000, '100000' 100000)
-set xrange [750.201:516142]
+set xrange [750.423:516252]
 set yrange [2e-19:10]
 set title 'polytope1000 (4096 queries)' offset 0,-0.6
 plot 'gjk-distance-warm.csv' skip 1 using ($1==5 ? $6 : NaN):13:($16/1.04-$6):($17-$13) with vectors nohead lc rgb '#bbbbbb' notitle, \

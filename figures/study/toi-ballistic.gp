@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload ballistic (120 queries: 80 hits an
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.21521:272.534]
+set xrange [0.2152:272.55]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

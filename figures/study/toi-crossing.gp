@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload crossing (120 queries: 60 hits and
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.16301:272.062]
+set xrange [0.163:272.1]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload linear (120 queries: 81 hits and 3
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.194223:239.129]
+set xrange [0.1942:239.1]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

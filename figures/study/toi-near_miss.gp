@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload near_miss (120 queries: 60 hits an
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.165213:282.532]
+set xrange [0.1652:282.6]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

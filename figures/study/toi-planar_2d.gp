@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload planar_2d (120 queries: 81 hits an
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.245772:6.43361]
+set xrange [0.2458:6.4335]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload screw_w0.5 (120 queries: 80 hits a
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.286148:327.215]
+set xrange [0.286133:327.15]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload screw_w1.5 (120 queries: 80 hits a
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.29258:315.896]
+set xrange [0.2926:315.9]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload small_fast (120 queries: 78 hits a
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.220245:296.277]
+set xrange [0.220267:296.25]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33

@@ -7,7 +7,7 @@ set multiplot title "time of impact, workload thin_plate (120 queries: 89 hits a
 set lmargin at screen 0.08
 set rmargin at screen 0.66
 set logscale x
-set xrange [0.15597:140.613]
+set xrange [0.156:140.61]
 set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.33
