@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -536,40 +537,31 @@ void writeGoals(const std::string& path, const std::vector<ToiRow>& rows) {
   md << "| goal | workload | ours us | against, us | ours / against | error median: ours, against | met |\n";
   md << "| --- | --- | ---: | --- | ---: | --- | :---: |\n";
   int met = 0, goals = 0;
+  // One row: ours against `other`; `ok` empty for a goal with no ratio to reach.
+  auto row = [&](const char* goal, const std::string& w, const ToiRow& ours, const ToiRow& other, std::optional<bool> ok) {
+    if (ok) ++goals, met += *ok;
+    md << "| " << goal << " | " << w << " | " << fmt("%.2f", ours.medianUs) << " | " << other.label() << " " << fmt("%.2f", other.medianUs)
+       << " | " << fmt("%.2f", ours.medianUs / other.medianUs) << " | " << fmt("%.1e", ours.errMedian) << ", " << fmt("%.1e", other.errMedian)
+       << (other.misses ? " (" + std::to_string(other.misses) + " misses)" : "") << " | "
+       << (!ok ? "(see the text)" : *ok ? "yes" : "**no**") << " |\n";
+  };
   for (const auto& w : workloadsOf(rows)) {
     const ToiRow* ours = findRow(rows, w, "ours", "tol=1e-7", "double");
     if (!ours) continue;
     // At most a third of FCL's conservative advancement's time, at equal or lower error (its
     // misses count against it: its error is over the hits it found).
     if (const ToiRow* ca = findRow(rows, w, "FCL CA", "", "double")) {
-      const double ratio = ours->medianUs / ca->medianUs;
       const bool error = ours->errMedian <= ca->errMedian || ca->misses > ours->misses;
-      const bool ok = ratio <= 1.0 / 3 && error;
-      ++goals;
-      met += ok;
-      md << "| a third of FCL's conservative advancement, at equal or lower error | " << w << " | " << fmt("%.2f", ours->medianUs) << " | "
-         << ca->label() << " " << fmt("%.2f", ca->medianUs) << " | " << fmt("%.2f", ratio) << " | " << fmt("%.1e", ours->errMedian) << ", "
-         << fmt("%.1e", ca->errMedian) << (ca->misses ? " (" + std::to_string(ca->misses) + " misses)" : "") << " | "
-         << (ok ? "yes" : "**no**") << " |\n";
+      row("a third of FCL's conservative advancement, at equal or lower error", w, *ours, *ca,
+          ours->medianUs / ca->medianUs <= 1.0 / 3 && error);
     }
     // At or below Bullet on ballistic and screw motion.
     if (w == "ballistic" || w.rfind("screw", 0) == 0)
-      if (const ToiRow* bullet = findRow(rows, w, "Bullet", "", "float")) {
-        const double ratio = ours->medianUs / bullet->medianUs;
-        const bool ok = ratio <= 1;
-        ++goals;
-        met += ok;
-        md << "| at or below Bullet | " << w << " | " << fmt("%.2f", ours->medianUs) << " | " << bullet->label() << " "
-           << fmt("%.2f", bullet->medianUs) << " | " << fmt("%.2f", ratio) << " | " << fmt("%.1e", ours->errMedian) << ", "
-           << fmt("%.1e", bullet->errMedian) << (bullet->misses ? " (" + std::to_string(bullet->misses) + " misses)" : "") << " | "
-           << (ok ? "yes" : "**no**") << " |\n";
-      }
+      if (const ToiRow* bullet = findRow(rows, w, "Bullet", "", "float"))
+        row("at or below Bullet", w, *ours, *bullet, ours->medianUs <= bullet->medianUs);
     // The planar set: no ratio to reach; the docs page says why Box2D is faster.
     if (const ToiRow* box2d = findRow(rows, w, "Box2D", "", "float"))
-      md << "| Box2D on the planar set: say why it is faster | " << w << " | " << fmt("%.2f", ours->medianUs) << " | " << box2d->label() << " "
-         << fmt("%.2f", box2d->medianUs) << " | " << fmt("%.2f", ours->medianUs / box2d->medianUs) << " | " << fmt("%.1e", ours->errMedian)
-         << ", " << fmt("%.1e", box2d->errMedian) << (box2d->misses ? " (" + std::to_string(box2d->misses) + " misses)" : "")
-         << " | (see the text) |\n";
+      row("Box2D on the planar set: say why it is faster", w, *ours, *box2d, std::nullopt);
   }
   md << "\n<br>" << met << " of " << goals << " met in this run.\n";
   mdNotes(md, "Computed by `toi_study` (also with `--replot`) from the `toi-<workload>.csv` files of the run in the time-of-impact table. "
