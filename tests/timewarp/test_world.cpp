@@ -200,6 +200,31 @@ TEST_CASE("world: Newton's cradle passes the momentum down the row, in order") {
   }
 }
 
+TEST_CASE("world: a blow passes through a row of touching balls at one instant, in one event") {
+  // The balls 1..4 touch (0.05 mm apart, within the tolerance of 0.345 mm); ball 0 strikes
+  // the row. The impulses pass the blow down the row at the instant of the strike (the
+  // instant pass of World::resolve): one event, one roll back, four collisions at the
+  // same time, and ball 4 leaves with ball 0's velocity.
+  std::string bodies;
+  for (int k = 0; k < 5; ++k)
+    bodies += std::string(k ? "," : "") + R"({ "name": "ball)" + std::to_string(k) + R"(", "shape": {"sphere": 0.1},
+        "position": [)" + std::to_string(k == 0 ? -0.3 : 0.20005 * k) + R"(, 0, 0], "velocity": [)" + (k == 0 ? "1" : "0") + R"(, 0, 0] })";
+  const Scene scene = parseScene(R"({ "duration": 0.5, "gravity": [0, 0, 0], "restitution": 1, "friction": 0,
+      "scalar": "double", "bodies": [)" + bodies + "] }");
+  World world(scene);
+  const Run run = runAll(world);
+  const auto& log = world.collisionLog();
+  REQUIRE(log.size() == 4);
+  for (int k = 0; k < 4; ++k) {
+    CHECK(log[k][1] == k);
+    CHECK(log[k][2] == k + 1);
+    CHECK(log[k][0] == log[0][0]);
+  }
+  CHECK(run.rollbacks == 1);
+  CHECK(world.stateOf(4).velocity.x() == Approx(1.0).epsilon(1e-6));
+  for (int k = 0; k < 4; ++k) CHECK(std::abs(world.stateOf(k).velocity.x()) < 1e-6);
+}
+
 TEST_CASE("world: a thin plate thrown at a thin wall does not tunnel, fixed steps do, and the check sees it") {
   auto scene = [](const std::string& ordering) {
     return parseScene(R"({ "duration": 0.25, "gravity": [0, 0, 0], "ordering": ")" + ordering + R"(", "fixed_substeps": 1,

@@ -33,6 +33,7 @@
 #include <gjkx/kdop/body_pair.hpp>
 #include <gjkx/support_mapping/shape.hpp>
 #include <gjkx/timewarp/broad_phase.hpp>
+#include <gjkx/timewarp/contact.hpp>
 #include <gjkx/timewarp/motion_cast.hpp>
 #include <gjkx/timewarp/scene.hpp>
 
@@ -212,13 +213,19 @@ class World {
   Bounds sweptBounds(int body, double t0, double t1) const;
   Bounds sweptBounds(int body, const FreeFlight& path, double t0, double t1) const;
   double approachAt(Hit& hit, const BodyState& si, const BodyState& sj, FrameState& frame) const;
+  ContactPatch patchOf(const Hit& hit, const BodyState& si, const BodyState& sj) const;
+  double approachOn(Hit& hit, const ContactPatch& patch, const BodyState& si, const BodyState& sj) const;
   std::vector<std::pair<int, int>> candidatePairs(double t0, double t1, FrameState& frame, int only = -1,
                                                   int also = -1);
   bool checkPair(int i, int j, double t0, double t1, FrameState& frame, Hit& hit);
   bool checkPieces(int i, int pi, int j, int pj, double t0, double t1, FrameState& frame, Hit& hit);
   template <typename S>
   std::vector<PiecePair> piecePairs(int i, int j, double t0, double t1, FrameState& frame);
-  void resolve(const Hit& hit, FrameState& frame);
+  void applyImpulse(const Hit& hit, BodyState& si, BodyState& sj, FrameState& frame);
+  bool contactAt(int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj, FrameState& frame,
+                 Hit& hit);
+  void touched(int i, int pi, int j, int pj, FrameState& frame);
+  std::vector<int> resolve(const Hit& hit, FrameState& frame);
   void runTimewarp(double T0, double T1, FrameState& frame);
   void runToiHeap(double T0, double T1, FrameState& frame);
   void runFixedStep(double T0, double T1, FrameState& frame);
