@@ -764,7 +764,9 @@ void World::touched(int i, int pi, int j, int pj, FrameState& frame) {
   }
 }
 
-std::vector<int> World::resolve(const Hit& hit, FrameState& frame) {
+/// A collision at t_c: its impulse, then (with `instantPass`) the impulses it sets off at
+/// the same instant; the bodies struck fly on from t_c. Returns the bodies struck.
+std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantPass) {
   // Roll back: the bodies' states at the time of impact t_c.
   const double tc = hit.time;
   std::vector<int> seen;              // the bodies the pass has looked at
@@ -850,7 +852,7 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame) {
     changed[ki] = changed[kj] = 1;
     const int bi = at.i, bj = at.j;  // (`link` may move as links grow)
     for (int b : {bi, bj}) {
-      if (bodies_[b].rigid.isStatic()) continue;
+      if (!instantPass || bodies_[b].rigid.isStatic()) continue;
       for (const FrameState::Touching& t : frame.touching[b]) {
         const std::size_t k = linkOf(t.i, t.pi, t.j, t.pj);
         Link& next = links[k];
@@ -1045,7 +1047,9 @@ void World::runFixedStep(double T0, double T1, FrameState& frame) {
       }
       if (!found || approachAt(hit, si, sj, frame) >= 0) continue;
       ++c.events;
-      resolve(hit, frame);  // flies both bodies on from tb
+      // One impulse per pair and step, as a discrete engine's single pass over its
+      // contacts; no instant pass (the baseline stays the simple one).
+      resolve(hit, frame, false);  // flies both bodies on from tb
     }
   }
 }

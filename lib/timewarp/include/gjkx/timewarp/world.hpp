@@ -225,7 +225,7 @@ class World {
   bool contactAt(int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj, FrameState& frame,
                  Hit& hit);
   void touched(int i, int pi, int j, int pj, FrameState& frame);
-  std::vector<int> resolve(const Hit& hit, FrameState& frame);
+  std::vector<int> resolve(const Hit& hit, FrameState& frame, bool instantPass = true);
   void runTimewarp(double T0, double T1, FrameState& frame);
   void runToiHeap(double T0, double T1, FrameState& frame);
   void runFixedStep(double T0, double T1, FrameState& frame);
