@@ -755,10 +755,12 @@ bool World::contactAt(int i, int pi, int j, int pj, double t, const BodyState& s
 }
 
 /// Remembers that pieces pi of body i and pj of body j came within the tolerance this
-/// frame (resolve's instant pass looks at them again).
+/// frame (resolve's instant pass looks at them again). Kept for the moving body or bodies
+/// only: the pass never starts from a static one (the plant would gather every contact).
 void World::touched(int i, int pi, int j, int pj, FrameState& frame) {
   const FrameState::Touching pair{i, pi, j, pj};
   for (int b : {i, j}) {
+    if (bodies_[b].rigid.isStatic()) continue;
     auto& list = frame.touching[b];
     if (std::find(list.begin(), list.end(), pair) == list.end()) list.push_back(pair);
   }
