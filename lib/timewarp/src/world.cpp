@@ -832,7 +832,8 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
     Link first;
     first.hit = hit;
     first.inContact = first.queued = true;
-    first.patch = patchOf(hit, states[indexOf(hit.i)], states[indexOf(hit.j)]);
+    const std::size_t ki = indexOf(hit.i), kj = indexOf(hit.j);  // in this order: i, then j
+    first.patch = patchOf(hit, states[ki], states[kj]);
     links.push_back(std::move(first));
     linkIndex.emplace(piecePairKey(hit.i, hit.pieceI, hit.j, hit.pieceJ), 0);
   }
@@ -859,7 +860,8 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
         const std::size_t k = linkOf(t.i, t.pi, t.j, t.pj);
         Link& next = links[k];
         if (!next.inContact || next.queued) continue;
-        if (approachOn(next.hit, next.patch, states[indexOf(t.i)], states[indexOf(t.j)]) < -1e-9) {
+        const std::size_t ka = indexOf(t.i), kb = indexOf(t.j);  // both seen already, by linkOf
+        if (approachOn(next.hit, next.patch, states[ka], states[kb]) < -1e-9) {
           next.queued = true;
           closing.push_back(k);
         }
