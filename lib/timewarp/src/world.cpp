@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <queue>
 #include <tuple>
 #include <stdexcept>
@@ -723,10 +724,34 @@ void World::applyImpulse(const Hit& hit, BodyState& si, BodyState& sj, FrameStat
   }
 }
 
+/// The contact data of pieces pi of body i and pj of body j at time t from a static GJK
+/// `g` of the two at states si and sj, written to `hit`. The normal is the direction
+/// between the closest points; where they (nearly) coincide or the pieces overlap, that
+/// direction is round-off, and the pair's last reliable normal is used instead (for a
+/// first contact, centre to centre). True if the closest points gave the normal.
+bool World::contactFromGjk(const GjkResult<double>& g, int i, int pi, int j, int pj, double t, const BodyState& si,
+                           const BodyState& sj, Hit& hit) {
+  hit.time = t;
+  hit.i = i;
+  hit.j = j;
+  hit.pieceI = pi;
+  hit.pieceJ = pj;
+  const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+  if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
+    hit.normal = z.normalized();
+    hit.pointI = g.witnessP;
+    hit.pointJ = g.witnessQ;
+    return true;
+  }
+  const Eigen::Vector3d& known = knownNormal(i, pi, j, pj);
+  hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
+  hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
+  return false;
+}
+
 /// The contact of pieces pi of body i and pj of body j at time t, the bodies at states si
-/// and sj: true, with the contact data in `hit`, if they are within the collision
-/// tolerance. The data are those of checkPieces (a double GJK, the pair's last reliable
-/// normal where the closest points coincide, the contact patch's closing point).
+/// and sj: true, with the contact data in `hit` (contactFromGjk, by a double GJK), if they
+/// are within the collision tolerance.
 bool World::contactAt(int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj,
                       FrameState& frame, Hit& hit) {
   GjkResult<double> g;
@@ -736,21 +761,7 @@ bool World::contactAt(int i, int pi, int j, int pj, double t, const BodyState& s
             Placed<Shape<double>>{bodies_[j].pieces[pj], sj.worldFromBody});
   }
   if (g.status != GjkStatus::Overlapping && g.distance > scene_.collisionTolerance) return false;
-  hit.time = t;
-  hit.i = i;
-  hit.j = j;
-  hit.pieceI = pi;
-  hit.pieceJ = pj;
-  const Eigen::Vector3d z = g.witnessQ - g.witnessP;
-  Eigen::Vector3d& known = knownNormal(i, pi, j, pj);
-  if (g.status != GjkStatus::Overlapping && g.distance > 1e-2 * scene_.collisionTolerance && z.norm() > 0) {
-    hit.pointI = g.witnessP;
-    hit.pointJ = g.witnessQ;
-    hit.normal = known = z.normalized();
-  } else {
-    hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
-    hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
-  }
+  if (contactFromGjk(g, i, pi, j, pj, t, si, sj, hit)) knownNormal(i, pi, j, pj) = hit.normal;
   return true;
 }
 
@@ -771,16 +782,17 @@ void World::touched(int i, int pi, int j, int pj, FrameState& frame) {
 std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantPass) {
   // Roll back: the bodies' states at the time of impact t_c.
   const double tc = hit.time;
-  std::vector<int> seen;              // the bodies the pass has looked at
-  std::deque<BodyState> states;       // their states at t_c (a deque: references stay valid)
-  std::vector<char> changed;          // whether an impulse changed them
-  const auto indexOf = [&](int b) {
-    for (std::size_t k = 0; k < seen.size(); ++k)
-      if (seen[k] == b) return k;
-    seen.push_back(b);
-    states.push_back(renormalized(bodies_[b].path.stateAt(tc)));
-    changed.push_back(0);
-    return seen.size() - 1;
+  struct Body {
+    int index;                  // in bodies_
+    BodyState state;            // at t_c
+    bool changed = false;       // by an impulse of this pass
+  };
+  std::deque<Body> seen;        // the bodies the pass has looked at (a deque: references stay valid)
+  const auto inPass = [&](int b) -> Body& {
+    for (Body& s : seen)
+      if (s.index == b) return s;
+    seen.push_back({b, renormalized(bodies_[b].path.stateAt(tc))});
+    return seen.back();
   };
   // The impulse at the hit; then every contact of the struck bodies that the impulses set
   // closing at this same instant, before any body flies on (the *instant pass*). A body
@@ -809,7 +821,7 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
   struct Link {
     Hit hit;
     bool inContact = false;
-    ContactPatch patch;
+    std::optional<ContactPatch> patch;  // found when first needed
     bool queued = false;
   };
   std::vector<Link> links;
@@ -818,52 +830,49 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
     const auto [where, isNew] = linkIndex.try_emplace(piecePairKey(i, pi, j, pj), links.size());
     if (!isNew) return where->second;
     Link link;
-    const BodyState& a = states[indexOf(i)];
-    const BodyState& b = states[indexOf(j)];
-    link.inContact = contactAt(i, pi, j, pj, tc, a, b, frame, link.hit);
-    if (link.inContact) {
-      PartTimer timer(frame.report.parts.impulses);
-      link.patch = patchOf(link.hit, a, b);
-    }
+    link.inContact = contactAt(i, pi, j, pj, tc, inPass(i).state, inPass(j).state, frame, link.hit);
     links.push_back(std::move(link));
     return links.size() - 1;
   };
-  {
-    Link first;
-    first.hit = hit;
-    first.inContact = first.queued = true;
-    const std::size_t ki = indexOf(hit.i), kj = indexOf(hit.j);  // in this order: i, then j
-    first.patch = patchOf(hit, states[ki], states[kj]);
-    links.push_back(std::move(first));
-    linkIndex.emplace(piecePairKey(hit.i, hit.pieceI, hit.j, hit.pieceJ), 0);
-  }
+  // The normal speed at a contact with the velocities its bodies have now (approachOn).
+  const auto closingSpeed = [&](Link& link) {
+    const BodyState& si = inPass(link.hit.i).state;
+    const BodyState& sj = inPass(link.hit.j).state;
+    PartTimer timer(frame.report.parts.impulses);
+    if (!link.patch) link.patch = patchOf(link.hit, si, sj);
+    return approachOn(link.hit, *link.patch, si, sj);
+  };
+  // The hit itself is the first contact (remembered as touching here too: a fixed step's
+  // check does not remember contacts).
+  inPass(hit.i);
+  inPass(hit.j);  // (in this order: the bodies fly on in the order seen)
+  touched(hit.i, hit.pieceI, hit.j, hit.pieceJ, frame);
+  links.push_back({hit, true, std::nullopt, true});
+  linkIndex.emplace(piecePairKey(hit.i, hit.pieceI, hit.j, hit.pieceJ), 0);
   std::deque<std::size_t> closing{0};
   for (int impulses = 0; !closing.empty() && impulses < kInstantImpulses;) {
-    Link& link = links[closing.front()];
+    const std::size_t k = closing.front();
     closing.pop_front();
-    link.queued = false;
-    Hit& at = link.hit;
-    const std::size_t ki = indexOf(at.i), kj = indexOf(at.j);
-    BodyState& si = states[ki];
-    BodyState& sj = states[kj];
-    // A contact queued by an earlier link is looked at with the velocities it has now.
-    if (approachOn(at, link.patch, si, sj) >= -1e-9) continue;
+    links[k].queued = false;
+    // Each contact is looked at with the states of this pass, the hit's too (its check
+    // chose its point on states not renormalized), and one queued by an earlier link with
+    // the velocities that link left.
+    if (closingSpeed(links[k]) >= -1e-9) continue;
     ++impulses;
-    touched(at.i, at.pieceI, at.j, at.pieceJ, frame);
-    frame.collidedPairs.emplace_back(at.i, at.j);
-    applyImpulse(at, si, sj, frame);
-    changed[ki] = changed[kj] = 1;
-    const int bi = at.i, bj = at.j;  // (`link` may move as links grow)
-    for (int b : {bi, bj}) {
+    const Hit struck = links[k].hit;  // (a copy: `links` grows below)
+    frame.collidedPairs.emplace_back(struck.i, struck.j);
+    Body& bi = inPass(struck.i);
+    Body& bj = inPass(struck.j);
+    applyImpulse(struck, bi.state, bj.state, frame);
+    bi.changed = bj.changed = true;
+    for (int b : {struck.i, struck.j}) {
       if (!instantPass || bodies_[b].rigid.isStatic()) continue;
       for (const FrameState::Touching& t : frame.touching[b]) {
-        const std::size_t k = linkOf(t.i, t.pi, t.j, t.pj);
-        Link& next = links[k];
-        if (!next.inContact || next.queued) continue;
-        const std::size_t ka = indexOf(t.i), kb = indexOf(t.j);  // both seen already, by linkOf
-        if (approachOn(next.hit, next.patch, states[ka], states[kb]) < -1e-9) {
-          next.queued = true;
-          closing.push_back(k);
+        const std::size_t n = linkOf(t.i, t.pi, t.j, t.pj);
+        if (!links[n].inContact || links[n].queued) continue;
+        if (closingSpeed(links[n]) < -1e-9) {
+          links[n].queued = true;
+          closing.push_back(n);
         }
       }
     }
@@ -873,10 +882,10 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
   FrameCounters& c = frame.report.counters;
   const double frameEnd = intervalEnd_;
   std::vector<int> flown;
-  for (std::size_t k = 0; k < seen.size(); ++k) {
-    const int b = seen[k];
+  for (const Body& s : seen) {
+    const int b = s.index;
     WorldBody& body = bodies_[b];
-    if (body.rigid.isStatic() || !changed[k]) continue;
+    if (body.rigid.isStatic() || !s.changed) continue;
     flown.push_back(b);
     const double end = std::max(body.path.t1, frameEnd);
     if (body.path.t1 > tc) {
@@ -888,7 +897,7 @@ std::vector<int> World::resolve(const Hit& hit, FrameState& frame, bool instantP
     const double t1 = end - tc > 1e-3 / scene_.frameRate ? end : tc + 1e-3 / scene_.frameRate;
     {
       PartTimer timer(frame.report.parts.integration);
-      body.setPath(flyChecked(body, states[k], tc, t1, body.gravity(scene_.gravity)));
+      body.setPath(flyChecked(body, s.state, tc, t1, body.gravity(scene_.gravity)));
     }
     ++body.version;
     auto& pieces = frame.pieces[b];
@@ -1035,19 +1044,7 @@ void World::runFixedStep(double T0, double T1, FrameState& frame) {
         // The deepest-looking touching piece pair speaks for the body pair (the first found).
         if (found) continue;
         found = true;
-        hit.time = tb;
-        hit.i = i;
-        hit.j = j;
-        hit.pieceI = p.a;
-        hit.pieceJ = p.b;
-        if (g.status != GjkStatus::Overlapping && z.norm() > 1e-2 * scene_.collisionTolerance) {
-          hit.normal = z.normalized();
-          hit.pointI = g.witnessP;
-          hit.pointJ = g.witnessQ;
-        } else {  // interpenetrating: the last normal seen, or centre to centre
-          hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
-          hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
-        }
+        contactFromGjk(g, i, p.a, j, p.b, tb, si, sj, hit);
       }
       if (!found || approachAt(hit, si, sj, frame) >= 0) continue;
       ++c.events;

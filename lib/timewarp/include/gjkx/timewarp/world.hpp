@@ -222,6 +222,8 @@ class World {
   template <typename S>
   std::vector<PiecePair> piecePairs(int i, int j, double t0, double t1, FrameState& frame);
   void applyImpulse(const Hit& hit, BodyState& si, BodyState& sj, FrameState& frame);
+  bool contactFromGjk(const GjkResult<double>& g, int i, int pi, int j, int pj, double t, const BodyState& si,
+                      const BodyState& sj, Hit& hit);
   bool contactAt(int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj, FrameState& frame,
                  Hit& hit);
   void touched(int i, int pi, int j, int pj, FrameState& frame);
