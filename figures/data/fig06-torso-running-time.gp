@@ -25,7 +25,7 @@ unset logscale y
 set format x '%g'
 set tmargin at screen 0.50
 set bmargin at screen 0.08
-set yrange [0:10.5486]
+set yrange [0:10.0724]
 set format y '%g'
 set ylabel 'execution / simulation time (linear: the parts)' offset 1,0
 set xlabel 'simulated time (s)'
