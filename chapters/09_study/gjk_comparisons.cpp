@@ -2,6 +2,8 @@
 // the peers, compiled once for every study program that reports it.
 #include "gjk_comparisons.hpp"
 
+#include "callgrind_markers.hpp"
+
 #include <gjkx/study/peers.hpp>
 
 #include <chrono>
@@ -130,6 +132,47 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
   return row;
 }
 
+/// profileOurs() with shapes of type T.
+template <typename T>
+GjkProfile profileOursAs(const GjkWorkload& w, bool boolean, bool cold, int passes) {
+  using S = typename T::Scalar;
+  const std::vector<GjkQuery>& queries = cold ? w.cold : w.warm;
+  std::vector<Placed<T>> P, Q;
+  for (const auto& q : queries) {
+    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
+    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+  }
+  GjkSettings<S> settings;
+  IntersectionSettings<S> intersection;
+  GjkCache<S> cache;
+  GjkCache<S>* cachePtr = cold ? nullptr : &cache;
+  GjkProfile profile;
+  for (int pass = 0; pass < passes; ++pass) {
+    for (size_t k = 0; k < queries.size(); ++k) {
+      if (queries[k].startsTrajectory) cache.valid = false;
+      GJKX_PROFILE_START();
+      if (boolean) {
+        const auto result = intersect(P[k], Q[k], intersection, cachePtr);
+        GJKX_PROFILE_STOP();
+        ++profile.ends[toString(result.status)];
+        profile.iterations += result.iterations;
+      } else {
+        const auto result = gjk(P[k], Q[k], settings, cachePtr);
+        GJKX_PROFILE_STOP();
+        ++profile.ends[toString(result.status)];
+        profile.iterations += result.iterations;
+      }
+      ++profile.calls;
+    }
+  }
+  return profile;
+}
+
+template <template <typename> class Shape>
+GjkProfile profileOursScalar(const GjkWorkload& w, bool boolean, bool cold, bool single, int passes) {
+  return single ? profileOursAs<Shape<float>>(w, boolean, cold, passes) : profileOursAs<Shape<double>>(w, boolean, cold, passes);
+}
+
 template <template <typename> class Shape>
 void measureOursBothScalars(const GjkWorkload& w, const std::string& workload, bool warm, bool boolean, int repeats,
                             std::vector<GjkRow>& rows) {
@@ -222,6 +265,15 @@ inline void measurePeers(const GjkWorkload& w, const std::string& workload, bool
 }
 
 }  // namespace detail
+
+GjkProfile profileOurs(const GjkWorkload& w, bool boolean, bool cold, bool single, int passes) {
+  switch (w.kind) {
+    case ShapeKind::Box: return detail::profileOursScalar<Box>(w, boolean, cold, single, passes);
+    case ShapeKind::Sphere: return detail::profileOursScalar<Sphere>(w, boolean, cold, single, passes);
+    case ShapeKind::Capsule: return detail::profileOursScalar<Capsule>(w, boolean, cold, single, passes);
+    default: return detail::profileOursScalar<Polytope>(w, boolean, cold, single, passes);
+  }
+}
 
 /// Runs every comparison; one row per method × workload (distance/boolean × shape × cold/warm).
 std::vector<GjkRow> runGjkComparisons(const GjkStudyOptions& options) {

@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -191,6 +192,20 @@ T ourShapeAs(const ShapeDescription& d) {
 }
 
 }  // namespace detail
+
+/// What profileOurs() counted.
+struct GjkProfile {
+  long long calls = 0;                    ///< queries answered (queries × passes)
+  long long iterations = 0;               ///< GJK iterations over all calls
+  std::map<std::string, long long> ends;  ///< calls by the status they ended in
+};
+
+/// Our GJK query on a workload, for gjk_profile: `intersect` (boolean) or `gjk` (distance)
+/// on every query of the warm list (or the cold one), `passes` times in order, one GjkCache
+/// carried along each trajectory (none when cold), in float or double, with callgrind's
+/// counting on around each call alone (callgrind_markers.hpp). Compiled here once, with the
+/// rest of ours on every shape type.
+GjkProfile profileOurs(const GjkWorkload& w, bool boolean, bool cold, bool single, int passes);
 
 /// Runs every comparison; one row per method × workload (distance/boolean × shape × cold/warm).
 std::vector<GjkRow> runGjkComparisons(const GjkStudyOptions& options);

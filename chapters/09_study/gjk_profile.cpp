@@ -17,7 +17,6 @@
 //
 // The total instruction count divided by the "calls" line is the instruction count per query.
 #include "../command_line.hpp"
-#include "callgrind_markers.hpp"
 #include "gjk_comparisons.hpp"
 
 #include <cstdio>
@@ -40,55 +39,6 @@ struct Options {
   int repeat = 1;
 };
 
-// The queries of one workload with shapes of type T, answered in order; prints how they ended.
-template <typename T>
-void run(const GjkWorkload& w, const Options& o) {
-  using S = typename T::Scalar;
-  const std::vector<GjkQuery>& queries = o.cold ? w.cold : w.warm;
-  std::vector<Placed<T>> P, Q;
-  for (const auto& q : queries) {
-    P.push_back(Placed<T>{comparison::ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{comparison::ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
-  }
-  const bool boolean = o.query == "boolean";
-  GjkSettings<S> settings;
-  IntersectionSettings<S> intersection;
-  GjkCache<S> cache;
-  GjkCache<S>* cachePtr = o.cold ? nullptr : &cache;
-  std::map<std::string, long long> ends;
-  long long iterations = 0;
-  for (int r = 0; r < o.repeat; ++r) {
-    for (size_t k = 0; k < queries.size(); ++k) {
-      if (queries[k].startsTrajectory) cache.valid = false;
-      GJKX_PROFILE_START();
-      if (boolean) {
-        const auto result = intersect(P[k], Q[k], intersection, cachePtr);
-        GJKX_PROFILE_STOP();
-        ++ends[toString(result.status)];
-        iterations += result.iterations;
-      } else {
-        const auto result = gjk(P[k], Q[k], settings, cachePtr);
-        GJKX_PROFILE_STOP();
-        ++ends[toString(result.status)];
-        iterations += result.iterations;
-      }
-    }
-  }
-  const long long calls = (long long)queries.size() * o.repeat;
-  std::printf("PROFILE shape=%s query=%s start=%s scalar=%s calls=%lld iterations=%.3f", w.name.c_str(), o.query.c_str(),
-              o.cold ? "cold" : "warm", sizeof(S) == 4 ? "float" : "double", calls, double(iterations) / double(calls));
-  for (const auto& [status, count] : ends) std::printf(" %s=%lld", status.c_str(), count);
-  std::printf("\n");
-}
-
-template <template <typename> class Shape>
-void runScalar(const GjkWorkload& w, const Options& o) {
-  if (o.single)
-    run<Shape<float>>(w, o);
-  else
-    run<Shape<double>>(w, o);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -110,11 +60,11 @@ int main(int argc, char** argv) {
       {"polytope12", {ShapeKind::Polytope, 12}}, {"polytope100", {ShapeKind::Polytope, 100}}, {"polytope1000", {ShapeKind::Polytope, 1000}}};
   const auto [kind, vertices] = kinds.at(o.shape);
   const GjkWorkload w = comparison::makeWorkload(o.shape, kind, vertices, study);
-  switch (kind) {
-    case ShapeKind::Box: runScalar<Box>(w, o); break;
-    case ShapeKind::Sphere: runScalar<Sphere>(w, o); break;
-    case ShapeKind::Capsule: runScalar<Capsule>(w, o); break;
-    default: runScalar<Polytope>(w, o); break;
-  }
+  const GjkProfile profile = profileOurs(w, o.query == "boolean", o.cold, o.single, o.repeat);
+  std::printf("PROFILE shape=%s query=%s start=%s scalar=%s calls=%lld iterations=%.3f", w.name.c_str(), o.query.c_str(),
+              o.cold ? "cold" : "warm", o.single ? "float" : "double", profile.calls,
+              double(profile.iterations) / double(profile.calls));
+  for (const auto& [status, count] : profile.ends) std::printf(" %s=%lld", status.c_str(), count);
+  std::printf("\n");
   return 0;
 }

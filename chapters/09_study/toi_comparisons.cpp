@@ -2,6 +2,8 @@
 // the runs, compiled once for every study program that reports it.
 #include "toi_comparisons.hpp"
 
+#include "callgrind_markers.hpp"
+
 #include <gjkx/study/ccd_queries.hpp>
 #include <gjkx/study/peers_toi.hpp>
 
@@ -97,6 +99,22 @@ struct Ours {
     return {reportsCollision(r.status), double(r.time), r.gjkRuns};
   }
 };
+
+ToiResult<double> runOurs(const Prepared<double>& p, const ToiSettings<double>& settings, int calls,
+                          ToiTrace<double>* trace) {
+  return std::visit(
+      [&](const auto& a, const auto& b) {
+        const auto P = moving(a, p.mp);
+        const auto Q = moving(b, p.mq);
+        if (trace) return timeOfImpact(P, Q, 0.0, 1.0, settings, trace);
+        ToiResult<double> r{};
+        GJKX_PROFILE_START();
+        for (int k = 0; k < calls; ++k) r = timeOfImpact(P, Q, 0.0, 1.0, settings);
+        GJKX_PROFILE_STOP();
+        return r;
+      },
+      p.P, p.Q);
+}
 
 /// One query, prepared for every method.
 struct QueryContext {

@@ -110,6 +110,14 @@ struct Outcome {
   int gjkRuns = 0;  ///< GJK runs (ours, CA, static, swept; 0 for the peers)
 };
 
+/// Ours (double, gjkx::timeOfImpact over [0, 1]) on a prepared query, for toi_profile:
+/// without a trace, `calls` calls with callgrind's counting on around them alone
+/// (callgrind_markers.hpp); with one, a single traced call outside the counting. The last
+/// call's result. Compiled here once, where the comparison instantiates the solver on every
+/// shape pair already, rather than again in every program that runs ours.
+ToiResult<double> runOurs(const Prepared<double>& p, const ToiSettings<double>& settings, int calls,
+                          ToiTrace<double>* trace = nullptr);
+
 /// The q-quantile of x (the smallest element with at least a fraction q at or below it); NaN if empty.
 double quantile(std::vector<double> x, double q);
 /// The median of x (the mean of the two middle elements for an even count); NaN if empty.

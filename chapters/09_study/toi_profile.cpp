@@ -35,7 +35,6 @@
 #include "callgrind_markers.hpp"
 #include "toi_comparisons.hpp"
 
-#include <gjkx/brent/time_of_impact.hpp>
 #include <gjkx/study/peers_toi.hpp>
 
 #include <cstdio>
@@ -85,10 +84,10 @@ struct Counts {
 };
 
 // The traced run of `--steps` and `--dump`: adds to the STEPS counters, prints query `index` if dumped.
-template <typename P, typename Q>
-void traceOurs(const P& Pm, const Q& Qm, const ToiSettings<double>& settings, int index, const Options& o, Counts& counts) {
+void traceOurs(const comparison::Prepared<double>& p, const ToiSettings<double>& settings, int index, const Options& o,
+               Counts& counts) {
   ToiTrace<double> trace;
-  const ToiResult<double> r = timeOfImpact(Pm, Qm, 0.0, 1.0, settings, &trace);
+  const ToiResult<double> r = comparison::runOurs(p, settings, 1, &trace);
   for (const ToiStep<double>& step : trace.steps) {
     ++counts.byKind[int(step.kind)];
     counts.separatingIterates += step.completeTest;
@@ -127,21 +126,15 @@ auto profiled(int repeat, Run run) {
 
 // One run of ours (double), keeping the solver's own counters.
 comparison::Outcome runOurs(const comparison::Prepared<double>& p, const Options& o, Counts& counts, int index) {
-  return std::visit(
-      [&](const auto& a, const auto& b) {
-        const auto P = moving(a, p.mp);
-        const auto Q = moving(b, p.mq);
-        const ToiSettings<double> settings =
-            toiSettings<double>(o.tol, o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper);
-        const ToiResult<double> r = profiled(o.repeat, [&] { return timeOfImpact(P, Q, 0.0, 1.0, settings); });
-        counts.gjkRuns += r.gjkRuns;
-        counts.brentIterations += r.brentIterations;
-        counts.restarts += r.restarts;
-        counts.sdEvaluations += r.sdEvaluations;
-        if (o.steps || o.dump >= 0) traceOurs(P, Q, settings, index, o, counts);
-        return comparison::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
-      },
-      p.P, p.Q);
+  const ToiSettings<double> settings =
+      toiSettings<double>(o.tol, o.method == "certified" ? ExtrusionVariant::Certified : ExtrusionVariant::Paper);
+  const ToiResult<double> r = comparison::runOurs(p, settings, o.repeat);
+  counts.gjkRuns += r.gjkRuns;
+  counts.brentIterations += r.brentIterations;
+  counts.restarts += r.restarts;
+  counts.sdEvaluations += r.sdEvaluations;
+  if (o.steps || o.dump >= 0) traceOurs(p, settings, index, o, counts);
+  return comparison::Outcome{reportsCollision(r.status), r.time, r.gjkRuns};
 }
 
 }  // namespace
