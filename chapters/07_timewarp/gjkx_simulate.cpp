@@ -13,7 +13,8 @@
 //
 // which is also written to DIR/summary.txt, followed by a line saying how the run was made
 // (RUN scene=... bodies=N scalar=... variant=... ordering=... tolerance=... frame_rate=...
-// checks=on|off), so that a kept run says what it is.
+// checks=on|off ... impulse_tolerance=... sticking_tolerance=...), so that a kept run says
+// what it is, and by a WORK line of counts that do not depend on the machine's load.
 //
 // A scene with bad input is rejected before the run (exit status 1, the message names the
 // body and the field); a bad command line exits 2.
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
   std::string scenePath, out = ".", ordering, scalar, variant = "certified";
   double tolerance = 0;
   bool noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
+  gjkx::ImpulseSettings impulse;
   app.add_option("scene", scenePath, "the scene file (JSON)")->required();
   app.add_option("--out", out, "folder for frames.csv and bodies.csv (created)");
   app.add_option("--ordering", ordering, "override the scene's ordering")
@@ -62,6 +64,14 @@ int main(int argc, char** argv) {
                "start each piece pair's time-of-impact query cold, not where the pair's last query ended");
   app.add_flag("--no-front-tracking", noFronts,
                "traverse the 14-DOP hierarchies afresh at every query (no front kept between frames)");
+  app.add_option("--impulse-tolerance", impulse.absoluteTolerance,
+                 "absolute and relative tolerance of the impulse integration (gjkx::ImpulseSettings)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--sticking-tolerance", impulse.stickingTolerance,
+                 "tangential speed counted as zero in the impulse integration, a fraction of the approach speed")
+      ->check(CLI::Range(1e-300, 0.999999))
+      ->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
 
@@ -81,6 +91,8 @@ int main(int argc, char** argv) {
     settings.warmStarts = !coldStarts;
     settings.coherence = !noCoherence;
     settings.frontTracking = !noFronts;
+    impulse.relativeTolerance = impulse.absoluteTolerance;
+    settings.impulse = impulse;
     world = std::make_unique<gjkx::World>(scene, settings);
   } catch (const std::exception& e) {
     std::cerr << "gjkx_simulate: " << e.what() << "\n";
@@ -98,7 +110,7 @@ int main(int argc, char** argv) {
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
   long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
-  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0;
+  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0, impulseSteps = 0;
   int brentMax = 0, tunnelled = 0;
   double maxPenetration = 0, wall = 0;
   try {
@@ -117,6 +129,7 @@ int main(int argc, char** argv) {
       piecePairs += c.piecePairs;
       kdopNodes += c.kdopNodes;
       settled += c.settled;
+      impulseSteps += c.impulseSteps;
       brentMax = std::max(brentMax, c.brentMax);
       tunnelled += c.tunnelled;
       maxPenetration = std::max(maxPenetration, c.maxPenetration);
@@ -162,10 +175,12 @@ int main(int argc, char** argv) {
           << " ordering=" << gjkx::orderingName(scene.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
           << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts ? "off" : "on")
           << " coherence=" << (coldStarts || noCoherence ? "off" : "on")
-          << " front_tracking=" << (noFronts ? "off" : "on") << "\n";
+          << " front_tracking=" << (noFronts ? "off" : "on") << " impulse_tolerance=" << impulse.absoluteTolerance
+          << " sticking_tolerance=" << impulse.stickingTolerance << "\n";
   // The work done, in counts that do not depend on the machine's load: what a change to the
   // solver or the hierarchy buys shows here even where wall times are noisy.
   summary << "WORK complete_tests=" << completeTests << " sd_evaluations=" << sdEvaluations
-          << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << " settled=" << settled << "\n";
+          << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << " settled=" << settled
+          << " impulse_steps=" << impulseSteps << "\n";
   return 0;
 }

@@ -75,6 +75,18 @@ GjkRow measure(const std::string& workload, const std::string& method, const std
   return row;
 }
 
+/// Our shapes of type T placed as the queries place them: P and Q, one per query.
+template <typename T>
+std::pair<std::vector<Placed<T>>, std::vector<Placed<T>>> placed(const GjkWorkload& w, const std::vector<GjkQuery>& queries) {
+  using S = typename T::Scalar;
+  std::vector<Placed<T>> P, Q;
+  for (const auto& q : queries) {
+    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
+    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+  }
+  return {std::move(P), std::move(Q)};
+}
+
 /// Ours (gjkx::gjk for distance, gjkx::intersect for boolean) in scalar S. With
 /// `roundedCores` false, spheres and capsules run the paper's GJK on their curved surfaces
 /// (the "ours-curved" rows) instead of on their cores.
@@ -83,11 +95,9 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
                    bool roundedCores = true) {
   using S = typename T::Scalar;
   const std::vector<GjkQuery>& queries = warm ? w.warm : w.cold;
-  std::vector<Placed<T>> P, Q;
-  for (const auto& q : queries) {
-    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
-  }
+  const auto shapes = placed<T>(w, queries);
+  const std::vector<Placed<T>>& P = shapes.first;
+  const std::vector<Placed<T>>& Q = shapes.second;
   GjkSettings<S> settings;
   settings.roundedCores = roundedCores;
   IntersectionSettings<S> intersection;
@@ -137,11 +147,9 @@ template <typename T>
 GjkProfile profileOursAs(const GjkWorkload& w, bool boolean, bool cold, int passes) {
   using S = typename T::Scalar;
   const std::vector<GjkQuery>& queries = cold ? w.cold : w.warm;
-  std::vector<Placed<T>> P, Q;
-  for (const auto& q : queries) {
-    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
-  }
+  const auto shapes = placed<T>(w, queries);
+  const std::vector<Placed<T>>& P = shapes.first;
+  const std::vector<Placed<T>>& Q = shapes.second;
   GjkSettings<S> settings;
   IntersectionSettings<S> intersection;
   GjkCache<S> cache;

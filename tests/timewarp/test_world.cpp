@@ -72,6 +72,43 @@ TEST_CASE("world: a box sliding on the floor stops after v^2 / (2 mu g)") {
   CHECK(world.stateOf(1).velocity.norm() < 0.05);
 }
 
+// The impulse integration's tolerances come in with the world's settings: the sliding box
+// stops where friction stops it at the default tolerances and at tight ones (the sliding
+// contact's impulses are integrated in either, in fewer steps at the default), and a bad
+// setting is refused when the world is built, by name.
+TEST_CASE("world: the impulse tolerances are the settings', and a bad one is refused by name") {
+  const Scene scene = parseScene(R"({ "duration": 1.5, "friction": 0.4, "scalar": "double",
+      "bodies": [ { "name": "floor", "shape": {"box": [4, 4, 0.5]}, "position": [0, 0, -0.5], "static": true },
+                  { "name": "box", "shape": {"box": [0.2, 0.2, 0.05]}, "position": [-1, 0, 0.0502], "velocity": [2, 0, 0] } ] })");
+  WorldSettings tight;
+  tight.impulse.absoluteTolerance = tight.impulse.relativeTolerance = 1e-12;
+  tight.impulse.stickingTolerance = 1e-9;
+  long steps[2] = {0, 0};
+  double travelled[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    World world(scene, k == 0 ? WorldSettings{} : tight);
+    long collisions = 0;
+    while (!world.done()) {
+      const FrameReport r = world.step();
+      steps[k] += r.counters.impulseSteps;
+      collisions += r.counters.collisions;
+    }
+    CHECK(collisions > 0);
+    travelled[k] = world.positionOf(1).x() + 1;
+  }
+  CHECK(travelled[0] == Approx(2.0 * 2.0 / (2 * 0.4 * 9.81)).epsilon(0.1));
+  CHECK(travelled[0] == Approx(travelled[1]).epsilon(0.01));
+  CHECK(steps[0] > 0);
+  CHECK(steps[0] < steps[1]);
+
+  WorldSettings bad;
+  bad.impulse.stickingTolerance = 0;
+  CHECK_THROWS_WITH(World(scene, bad), Catch::Matchers::Contains("settings.impulse.stickingTolerance"));
+  bad = WorldSettings{};
+  bad.impulse.absoluteTolerance = std::nan("");
+  CHECK_THROWS_WITH(World(scene, bad), Catch::Matchers::Contains("settings.impulse.absoluteTolerance"));
+}
+
 // Settling (World::settle): a body with too little kinetic energy to lift its centre of
 // mass by one tolerance, struck only by resting bodies in a frame, sleeps at its end. A
 // thin rod dropped 2 mm onto the floor at a slant (it lands on one end and rocks) must end

@@ -69,6 +69,10 @@ struct WorldSettings {
   bool checks = true;
   /// Record what the orderings did, event by event (chapter 07 draws it).
   bool trace = false;
+  /// The impulse integration's tolerances and step cap (gjkx/dynamics/impulse.hpp, §6); its
+  /// microcollision speed is not taken from here but from the scene (its gravity and
+  /// collision tolerance). Checked when the world is built ("settings.impulse...").
+  ImpulseSettings impulse;
 };
 
 /// What happened in one frame (a row of frames.csv).
@@ -90,6 +94,7 @@ struct FrameCounters {
   long piecePairs = 0;          ///< convex piece pairs of mesh bodies that the 14-DOP hierarchy handed to the solver
   long kdopNodes = 0;           ///< nodes of the hierarchies' test trees visited (kdop)
   long sdEvaluations = 0;       ///< supporting distances evaluated by the time-of-impact queries (each a support pair)
+  long impulseSteps = 0;        ///< steps of the impulse integration, accepted and rejected (ImpulseResult::integratorSteps)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported (by more than twice the tolerance, or a tolerance deeper than they started the frame)
 };
