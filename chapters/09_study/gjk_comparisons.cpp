@@ -75,17 +75,42 @@ GjkRow measure(const std::string& workload, const std::string& method, const std
   return row;
 }
 
-/// Our shapes of type T placed as the queries place them: P and Q, one per query.
+/// Ours on one query list of a workload (the warm trajectories or the cold pairs), shapes
+/// of type T: the shapes placed as the queries place them, the settings, and one GjkCache
+/// carried along each warm trajectory (none for the cold list). A query is begun
+/// (beginQuery: a new trajectory starts cold), then answered by intersectOn or gjkOn.
 template <typename T>
-std::pair<std::vector<Placed<T>>, std::vector<Placed<T>>> placed(const GjkWorkload& w, const std::vector<GjkQuery>& queries) {
+struct OursOnQueries {
   using S = typename T::Scalar;
+  const std::vector<GjkQuery>& queries;
+  bool warm;
   std::vector<Placed<T>> P, Q;
-  for (const auto& q : queries) {
-    P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
-    Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+  GjkSettings<S> settings;
+  IntersectionSettings<S> intersection;
+  GjkCache<S> cache;
+
+  /// With `roundedCores` false, spheres and capsules run the paper's GJK on their curved
+  /// surfaces instead of on their cores.
+  OursOnQueries(const GjkWorkload& w, bool warmList, bool roundedCores = true)
+      : queries(warmList ? w.warm : w.cold), warm(warmList) {
+    for (const auto& q : queries) {
+      P.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeP]), q.poseP.cast<S>()});
+      Q.push_back(Placed<T>{ourShapeAs<T>(w.shapes[q.shapeQ]), q.poseQ.cast<S>()});
+    }
+    settings.roundedCores = roundedCores;
+    intersection.gjk.roundedCores = roundedCores;
   }
-  return {std::move(P), std::move(Q)};
-}
+  /// Forgets every warm start (before a pass over the list).
+  void reset() { cache = GjkCache<S>{}; }
+  /// Query k begins: the cache is dropped where a trajectory starts.
+  void beginQuery(int k) {
+    if (warm && queries[k].startsTrajectory) cache.valid = false;
+  }
+  /// gjkx::intersect on query k.
+  auto intersectOn(int k) { return intersect(P[k], Q[k], intersection, warm ? &cache : nullptr); }
+  /// gjkx::gjk on query k.
+  auto gjkOn(int k) { return gjk(P[k], Q[k], settings, warm ? &cache : nullptr); }
+};
 
 /// Ours (gjkx::gjk for distance, gjkx::intersect for boolean) in scalar S. With
 /// `roundedCores` false, spheres and capsules run the paper's GJK on their curved surfaces
@@ -93,27 +118,18 @@ std::pair<std::vector<Placed<T>>, std::vector<Placed<T>>> placed(const GjkWorklo
 template <typename T>
 GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char* method, bool warm, bool boolean, int repeats,
                    bool roundedCores = true) {
-  using S = typename T::Scalar;
-  const std::vector<GjkQuery>& queries = warm ? w.warm : w.cold;
-  const auto shapes = placed<T>(w, queries);
-  const std::vector<Placed<T>>& P = shapes.first;
-  const std::vector<Placed<T>>& Q = shapes.second;
-  GjkSettings<S> settings;
-  settings.roundedCores = roundedCores;
-  IntersectionSettings<S> intersection;
-  intersection.gjk.roundedCores = roundedCores;
-  GjkCache<S> cache;
-  GjkCache<S>* cachePtr = warm ? &cache : nullptr;
-  auto reset = [&] { cache = GjkCache<S>{}; };
+  OursOnQueries<T> ours(w, warm, roundedCores);
+  const std::vector<GjkQuery>& queries = ours.queries;
+  auto reset = [&] { ours.reset(); };
   auto answer = [&](int k) -> double {
-    if (warm && queries[k].startsTrajectory) cache.valid = false;
+    ours.beginQuery(k);
     if (boolean) {
-      const auto r = intersect(P[k], Q[k], intersection, cachePtr);
+      const auto r = ours.intersectOn(k);
       if (r.status == IntersectionStatus::Disjoint) return 0.0;
       if (r.status == IntersectionStatus::Intersecting) return 1.0;
       return std::nan("");
     }
-    const auto r = gjk(P[k], Q[k], settings, cachePtr);
+    const auto r = ours.gjkOn(k);
     if (r.status == GjkStatus::Separated || r.status == GjkStatus::Overlapping) return double(r.distance);
     return std::nan("");
   };
@@ -122,15 +138,15 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
   // untimed, in the same order (so the warm caches evolve as in the measured passes).
   reset();
   for (int k = 0; k < int(queries.size()); ++k) {
-    if (warm && queries[k].startsTrajectory) cache.valid = false;
+    ours.beginQuery(k);
     bool cap = false, numerical = false, other = false;
     if (boolean) {
-      const IntersectionStatus s = intersect(P[k], Q[k], intersection, cachePtr).status;
+      const IntersectionStatus s = ours.intersectOn(k).status;
       cap = s == IntersectionStatus::IterationCap;
       numerical = s == IntersectionStatus::NumericalFailure;
       other = !cap && !numerical && s != IntersectionStatus::Disjoint && s != IntersectionStatus::Intersecting;
     } else {
-      const GjkStatus s = gjk(P[k], Q[k], settings, cachePtr).status;
+      const GjkStatus s = ours.gjkOn(k).status;
       cap = s == GjkStatus::IterationCap;
       numerical = s == GjkStatus::NumericalFailure;
       other = !cap && !numerical && s != GjkStatus::Separated && s != GjkStatus::Overlapping;
@@ -145,27 +161,19 @@ GjkRow measureOurs(const GjkWorkload& w, const std::string& workload, const char
 /// profileOurs() with shapes of type T.
 template <typename T>
 GjkProfile profileOursAs(const GjkWorkload& w, bool boolean, bool cold, int passes) {
-  using S = typename T::Scalar;
-  const std::vector<GjkQuery>& queries = cold ? w.cold : w.warm;
-  const auto shapes = placed<T>(w, queries);
-  const std::vector<Placed<T>>& P = shapes.first;
-  const std::vector<Placed<T>>& Q = shapes.second;
-  GjkSettings<S> settings;
-  IntersectionSettings<S> intersection;
-  GjkCache<S> cache;
-  GjkCache<S>* cachePtr = cold ? nullptr : &cache;
+  OursOnQueries<T> ours(w, !cold);
   GjkProfile profile;
   for (int pass = 0; pass < passes; ++pass) {
-    for (size_t k = 0; k < queries.size(); ++k) {
-      if (queries[k].startsTrajectory) cache.valid = false;
+    for (int k = 0; k < int(ours.queries.size()); ++k) {
+      ours.beginQuery(k);
       GJKX_PROFILE_START();
       if (boolean) {
-        const auto result = intersect(P[k], Q[k], intersection, cachePtr);
+        const auto result = ours.intersectOn(k);
         GJKX_PROFILE_STOP();
         ++profile.ends[toString(result.status)];
         profile.iterations += result.iterations;
       } else {
-        const auto result = gjk(P[k], Q[k], settings, cachePtr);
+        const auto result = ours.gjkOn(k);
         GJKX_PROFILE_STOP();
         ++profile.ends[toString(result.status)];
         profile.iterations += result.iterations;

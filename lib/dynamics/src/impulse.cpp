@@ -154,6 +154,17 @@ void requireSetting(bool ok, const char* field, const char* what) {
 
 }  // namespace
 
+void ImpulseSettings::validate(const std::string& field) const {
+  if (!(microcollisionSpeed >= 0 && std::isfinite(microcollisionSpeed)))
+    failInput(field + ".microcollisionSpeed", "must be finite and not negative");
+  if (!(absoluteTolerance > 0 && std::isfinite(absoluteTolerance)))
+    failInput(field + ".absoluteTolerance", "must be finite and positive");
+  if (!(relativeTolerance >= 0 && std::isfinite(relativeTolerance)))
+    failInput(field + ".relativeTolerance", "must be finite and not negative");
+  if (!(stickingTolerance > 0 && stickingTolerance < 1)) failInput(field + ".stickingTolerance", "must lie in (0, 1)");
+  if (maxSteps < 1) failInput(field + ".maxSteps", "must be at least 1");
+}
+
 ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b,
                                const Contact& contact, const CollisionMaterial& material,
                                const ImpulseSettings& settings) {
@@ -165,15 +176,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
   requireSetting(material.restitution >= 0 && material.restitution <= 1, "material.restitution", "must lie in [0, 1]");
   requireSetting(material.friction >= 0 && std::isfinite(material.friction), "material.friction",
                  "must be finite and not negative");
-  requireSetting(settings.microcollisionSpeed >= 0 && std::isfinite(settings.microcollisionSpeed),
-                 "settings.microcollisionSpeed", "must be finite and not negative");
-  requireSetting(settings.absoluteTolerance > 0 && std::isfinite(settings.absoluteTolerance),
-                 "settings.absoluteTolerance", "must be finite and positive");
-  requireSetting(settings.relativeTolerance >= 0 && std::isfinite(settings.relativeTolerance),
-                 "settings.relativeTolerance", "must be finite and not negative");
-  requireSetting(settings.stickingTolerance > 0 && settings.stickingTolerance < 1, "settings.stickingTolerance",
-                 "must lie in (0, 1)");
-  requireSetting(settings.maxSteps >= 1, "settings.maxSteps", "must be at least 1");
+  settings.validate("settings");
   if (A.isStatic() && B.isStatic()) failInput("bodies", "both static: an impulse can move neither");
 
   ImpulseResult result;

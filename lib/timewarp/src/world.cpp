@@ -196,15 +196,8 @@ World::World(const Scene& scene, const WorldSettings& settings) : scene_(scene),
   frameCount_ = std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9)));
   // The impulse integration's settings enter here, so a bad one is named before the run
   // rather than at its first collision.
-  const ImpulseSettings& is = settings.impulse;
-  if (!(is.absoluteTolerance > 0 && std::isfinite(is.absoluteTolerance)))
-    failInput("settings.impulse.absoluteTolerance", "must be finite and positive");
-  if (!(is.relativeTolerance >= 0 && std::isfinite(is.relativeTolerance)))
-    failInput("settings.impulse.relativeTolerance", "must be finite and not negative");
-  if (!(is.stickingTolerance > 0 && is.stickingTolerance < 1))
-    failInput("settings.impulse.stickingTolerance", "must lie in (0, 1)");
-  if (is.maxSteps < 1) failInput("settings.impulse.maxSteps", "must be at least 1");
-  impulse_ = is;
+  settings.impulse.validate("settings.impulse");
+  impulse_ = settings.impulse;
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
   // A mesh is read and decomposed once however many bodies use it (the decomposition is
   // also cached on disk, gjkx/mesh/convex_decomposition.hpp).

@@ -45,6 +45,8 @@
 
 #include <gjkx/dynamics/rigid_body.hpp>
 
+#include <string>
+
 namespace gjkx {
 
 /// A point of contact between bodies A and B, world frame.
@@ -85,6 +87,11 @@ struct ImpulseSettings {
   double stickingTolerance = 1e-6;
   /// Cap on the integrator's steps; reaching it ends in ImpulseStatus::StepCap.
   int maxSteps = 100000;
+
+  /// Throws std::invalid_argument naming the setting (`field` + ".absoluteTolerance", ...)
+  /// for one out of range: resolveCollision() checks its settings with it, and a caller
+  /// that keeps settings for later (gjkx::World) checks them where they enter.
+  void validate(const std::string& field) const;
 };
 
 /// What a collision did.
