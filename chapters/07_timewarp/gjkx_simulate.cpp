@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
   long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
-  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0, impulseSteps = 0;
+  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0, impulseSteps = 0, impulseCaps = 0;
   int brentMax = 0, tunnelled = 0;
   double maxPenetration = 0, wall = 0;
   try {
@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
       kdopNodes += c.kdopNodes;
       settled += c.settled;
       impulseSteps += c.impulseSteps;
+      impulseCaps += c.impulseCaps;
       brentMax = std::max(brentMax, c.brentMax);
       tunnelled += c.tunnelled;
       maxPenetration = std::max(maxPenetration, c.maxPenetration);
@@ -181,6 +182,6 @@ int main(int argc, char** argv) {
   // solver or the hierarchy buys shows here even where wall times are noisy.
   summary << "WORK complete_tests=" << completeTests << " sd_evaluations=" << sdEvaluations
           << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << " settled=" << settled
-          << " impulse_steps=" << impulseSteps << "\n";
+          << " impulse_steps=" << impulseSteps << " impulse_caps=" << impulseCaps << "\n";
   return 0;
 }

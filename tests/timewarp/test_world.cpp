@@ -101,6 +101,14 @@ TEST_CASE("world: the impulse tolerances are the settings', and a bad one is ref
   CHECK(steps[0] > 0);
   CHECK(steps[0] < steps[1]);
 
+  // An integration cut short by its step cap is counted, not silent.
+  WorldSettings capped;
+  capped.impulse.maxSteps = 1;
+  World cut(scene, capped);
+  long caps = 0;
+  while (!cut.done()) caps += cut.step().counters.impulseCaps;
+  CHECK(caps > 0);
+
   WorldSettings bad;
   bad.impulse.stickingTolerance = 0;
   CHECK_THROWS_WITH(World(scene, bad), Catch::Matchers::Contains("settings.impulse.stickingTolerance"));

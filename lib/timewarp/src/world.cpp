@@ -681,6 +681,7 @@ void World::applyImpulse(const Hit& hit, BodyState& si, BodyState& sj, FrameStat
   FrameCounters& c = frame.report.counters;
   ++c.collisions;
   c.impulseSteps += result.integratorSteps;
+  if (result.status == ImpulseStatus::StepCap) ++c.impulseCaps;
   if (result.status == ImpulseStatus::Microcollision) ++c.microcollisions;
   collisionLog_.push_back({hit.time, double(hit.i), double(hit.j)});
   if (settings_.trace) trace_.push_back({TraceEvent::Kind::Collision, hit.i, hit.j, hit.time, hit.time});

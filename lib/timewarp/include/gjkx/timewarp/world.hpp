@@ -95,6 +95,7 @@ struct FrameCounters {
   long kdopNodes = 0;           ///< nodes of the hierarchies' test trees visited (kdop)
   long sdEvaluations = 0;       ///< supporting distances evaluated by the time-of-impact queries (each a support pair)
   long impulseSteps = 0;        ///< steps of the impulse integration, accepted and rejected (ImpulseResult::integratorSteps)
+  long impulseCaps = 0;         ///< impulses whose integration reached ImpulseSettings::maxSteps (ImpulseStatus::StepCap; the impulse so far applied)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   int tunnelled = 0;            ///< pairs that interpenetrated during the frame with no collision reported (by more than twice the tolerance, or a tolerance deeper than they started the frame)
 };
