@@ -1,6 +1,8 @@
 # CMake helpers of the gjkx house. Adding a stage, a chapter or a test is one
 # line: gjkx_stage(), gjkx_chapter(), gjkx_test().
 
+include(GNUInstallDirs)   # CMAKE_INSTALL_INCLUDEDIR, CMAKE_INSTALL_LIBDIR
+
 # Warnings for every target of the project (Eigen comes in as a system include).
 function(gjkx_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
@@ -9,38 +11,59 @@ function(gjkx_warnings target)
   endif()
 endfunction()
 
-# gjkx_stage(<name> [DEPENDS <earlier stages>...] [LINKS <external targets>...])
+# gjkx_stage(<name> [DEPENDS <earlier stages>...] [LINKS <external targets>...] [NOT_EXPORTED])
 #
 # lib/<name>/include holds the headers <gjkx/<name>/*.hpp>, lib/<name>/src the
 # sources (if any; a stage without sources is header only). The target is
 # gjkx::<name>. A stage may depend only on stages already declared, so the order
 # of the gjkx_stage() lines in lib/CMakeLists.txt is the order of the paper.
+#
+# `cmake --install` installs every stage's headers and library, and the package
+# (cmake/gjkx_package.cmake) exports every stage as gjkx::<name> for a user's
+# find_package(gjkx), unless NOT_EXPORTED (what only the project's own programs link).
+# Every external target in LINKS needs its find_dependency() in the package: an exported
+# stage records them here, and gjkx_package.cmake refuses one it does not know.
 function(gjkx_stage name)
-  cmake_parse_arguments(ARG "" "" "DEPENDS;LINKS" ${ARGN})
+  cmake_parse_arguments(ARG "NOT_EXPORTED" "" "DEPENDS;LINKS" ${ARGN})
+  get_property(unexported GLOBAL PROPERTY GJKX_UNEXPORTED_STAGES)
   foreach(dep IN LISTS ARG_DEPENDS)
     if(NOT TARGET gjkx::${dep})
       message(FATAL_ERROR "stage ${name} depends on ${dep}, which is not an earlier stage")
+    endif()
+    if(NOT ARG_NOT_EXPORTED AND dep IN_LIST unexported)
+      message(FATAL_ERROR "stage ${name} is exported but depends on ${dep}, which is NOT_EXPORTED")
     endif()
   endforeach()
   set(dir ${CMAKE_CURRENT_SOURCE_DIR}/${name})
   file(GLOB sources CONFIGURE_DEPENDS ${dir}/src/*.cpp)
   list(TRANSFORM ARG_DEPENDS PREPEND gjkx:: OUTPUT_VARIABLE deps)
+  set(includes $<BUILD_INTERFACE:${dir}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   if(sources)
     add_library(gjkx_${name} STATIC ${sources})
-    target_include_directories(gjkx_${name} PUBLIC ${dir}/include)
+    target_include_directories(gjkx_${name} PUBLIC ${includes})
     target_link_libraries(gjkx_${name} PUBLIC ${deps} Eigen3::Eigen PRIVATE ${ARG_LINKS})
     gjkx_warnings(gjkx_${name})
   else()
     add_library(gjkx_${name} INTERFACE)
-    target_include_directories(gjkx_${name} INTERFACE ${dir}/include)
+    target_include_directories(gjkx_${name} INTERFACE ${includes})
     target_link_libraries(gjkx_${name} INTERFACE ${deps} Eigen3::Eigen ${ARG_LINKS})
   endif()
   add_library(gjkx::${name} ALIAS gjkx_${name})
+  set_target_properties(gjkx_${name} PROPERTIES EXPORT_NAME ${name})
   set_property(GLOBAL APPEND PROPERTY GJKX_STAGES ${name})
-  # `cmake --install build --prefix DIR`: the stage's headers and, if it has sources, its library.
-  install(DIRECTORY ${dir}/include/ DESTINATION include)
-  if(sources)
-    install(TARGETS gjkx_${name} ARCHIVE DESTINATION lib)
+  # `cmake --install build --prefix DIR`: the stage's headers and, if it has sources, its
+  # library; in the component `development`, which is all a user's project needs.
+  install(DIRECTORY ${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT development)
+  if(ARG_NOT_EXPORTED)
+    set_property(GLOBAL APPEND PROPERTY GJKX_UNEXPORTED_STAGES ${name})
+    if(sources)
+      install(TARGETS gjkx_${name} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+    endif()
+  else()
+    set_property(GLOBAL APPEND PROPERTY GJKX_EXPORTED_STAGES ${name})
+    set_property(GLOBAL APPEND PROPERTY GJKX_EXPORTED_LINKS Eigen3::Eigen ${ARG_LINKS})
+    install(TARGETS gjkx_${name} EXPORT gjkxTargets
+            ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
   endif()
 endfunction()
 
