@@ -1,8 +1,10 @@
-// What every chapter program shares: its command line (--out DIR, parsed by CLI11)
-// and the conversion of the library's 3D vectors to the plane of a 2D figure.
+// What every chapter program shares: its command line (--out DIR, parsed by CLI11),
+// the formatting of numbers and tables (formatting.hpp) and the conversion of the
+// library's 3D vectors to the plane of a 2D figure.
 #pragma once
 
 #include "command_line.hpp"
+#include "formatting.hpp"
 
 #include <gjkx/motion/vector.hpp>
 #include <gjkx/render/canvas.hpp>

@@ -31,11 +31,7 @@ namespace {
 constexpr double kHalo = 3.0;  // pixels of background behind a label, so lines under it do not cut it
 constexpr TextStyle haloLabel{Font::Math, style::labelSize, palette::ink, kHalo, palette::background};
 
-std::string fixed(double x, int digits = 2) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
-  return buffer;
-}
+using chapter::fixed;
 
 // A long line through `through`, normal to s: the supporting line (plane) of §2.3.
 void supportingLine(Canvas& canvas, const V& through, const V& s, const Stroke& stroke) {

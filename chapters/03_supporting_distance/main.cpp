@@ -34,11 +34,7 @@ constexpr int kSamples = 1440;  // directions on the unit circle: a quarter degr
 
 V direction(double angle) { return V(std::cos(angle), std::sin(angle), 0); }
 
-std::string fixed(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", x);
-  return buffer;
-}
+using chapter::fixed;
 
 std::vector<Eigen::Vector2d> outline(const Body& body) {
   std::vector<Eigen::Vector2d> points;
