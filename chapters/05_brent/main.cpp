@@ -19,7 +19,7 @@
 // can be seen.
 #include "../chapter.hpp"
 
-#include <gjkx/brent/root_finder.hpp>
+#include <gjkx/root_solver/brent_method.hpp>
 #include <gjkx/brent/time_of_impact.hpp>
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/render/canvas.hpp>

@@ -1,7 +1,7 @@
 // Mirtich's impulse integration through compression and restitution (see the header).
 #include <gjkx/dynamics/impulse.hpp>
 
-#include <gjkx/brent/root_finder.hpp>
+#include <gjkx/root_solver/brent_method.hpp>
 
 #include <boost/numeric/odeint.hpp>
 
@@ -355,7 +355,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     // A phase change inside the step: find the step length h where g, measured on the
     // step redone from its start with the plain Dormand-Prince stepper, crosses 0. Every
     // trial is a whole Dormand-Prince step, so the root is found by the same Brent's method
-    // as §5's time of impact (root_finder.hpp): superlinear, a handful of trials where
+    // as §5's time of impact (gjkx/root_solver/brent_method.hpp): superlinear, a handful of trials where
     // bisection took some fifty. The step ends at the bracket's end where g >= 0, where
     // some event has happened.
     const double length = sigma - sigmaPrev;

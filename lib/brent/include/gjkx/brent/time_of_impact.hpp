@@ -90,7 +90,7 @@
 #include <optional>
 #include <utility>
 
-#include <gjkx/brent/root_finder.hpp>
+#include <gjkx/root_solver/brent_method.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/support_mapping/deforming_simplex.hpp>
 #include <gjkx/support_mapping/placed.hpp>

@@ -26,7 +26,7 @@
 /// - The three quantities (tangential impulse, and the work W_z) are integrated over \f$p_z\f$
 ///   with Boost.Odeint's Dormand–Prince 5(4) pair under step-size control; each phase
 ///   change (sticking, end of compression, end of restitution) is located on the step
-///   that crossed it by the same Brent's method as §5's time of impact (gjkx/brent/root_finder.hpp),
+///   that crossed it by the same Brent's method as §5's time of impact (gjkx/root_solver/brent_method.hpp),
 ///   on one continuous function that is \f$\ge 0\f$ exactly when some change has happened.
 /// - *Microcollisions* (Mirtich's thesis, ch. 4): resting contact is a train of tiny
 ///   collisions. Below a threshold approach speed \f$v_\mu\f$ a collision is processed with

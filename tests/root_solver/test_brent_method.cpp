@@ -5,7 +5,7 @@
 // roots are known: where it converges, how many evaluations it needs, that every
 // iterate stays inside the current bracket, and, step by step, that the first iterates
 // on x^2 - 2 are exactly the secant and inverse quadratic steps derived by hand below.
-#include <gjkx/brent/root_finder.hpp>
+#include <gjkx/root_solver/brent_method.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,11 @@
 /// @file
-/// @brief Brent's method: a root finder that combines bisection, the secant method and
-/// inverse quadratic interpolation (§5, the paper's reference [9]). No geometry here.
+/// @brief Brent's method: the root solver of §5 that combines bisection, the secant method
+/// and inverse quadratic interpolation (the paper's reference [9]). No geometry here.
+///
+/// The one concept of the stage `root_solver`, which depends on `motion` only (for the
+/// round-off constants): the time-of-impact solver of §5 (`brent`) and the impulse
+/// integration of `dynamics`, which locates an impulse's phase changes with it, both link it
+/// without either linking the other.
 ///
 /// "Our implementation uses Brent's method, which is a root solver that cleverly
 /// combines bisection, the secant method, and inverse quadratic interpolation to
@@ -36,8 +41,8 @@ enum class BrentStepKind {
   Secant,                  ///< linear interpolation through a and b
   InverseQuadratic,        ///< inverse quadratic interpolation through a, b and c
   MinimalStep,             ///< the interpolated step was below the tolerance: step by the tolerance
-  Leap,                    ///< not Brent's own: the time-of-impact solver's leap past a creeping restart (time_of_impact.hpp)
-  DistanceSecant,          ///< not Brent's own: the time-of-impact solver's probe where the exact distances extrapolate to the tolerance (time_of_impact.hpp)
+  Leap,                    ///< not Brent's own: the time-of-impact solver's leap past a creeping restart (gjkx/brent/time_of_impact.hpp)
+  DistanceSecant,          ///< not Brent's own: the time-of-impact solver's probe where the exact distances extrapolate to the tolerance (gjkx/brent/time_of_impact.hpp)
 };
 
 /// The name of a step kind, for traces.
