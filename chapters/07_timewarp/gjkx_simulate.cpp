@@ -104,43 +104,19 @@ int main(int argc, char** argv) {
     std::cerr << "gjkx_simulate: cannot write to " << out << "\n";
     return 1;
   }
-  frames << "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,"
-            "max_penetration,events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,"
-            "tunnelled,integration_s,bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught\n";
+  frames << gjkx::frameHeader() << '\n';
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
-  long collisions = 0, rollbacks = 0, brent = 0, brentQueries = 0, photo = 0;
-  long completeTests = 0, sdEvaluations = 0, piecePairs = 0, kdopNodes = 0, settled = 0, impulseSteps = 0, impulseCaps = 0;
-  int brentMax = 0, tunnelled = 0;
-  double maxPenetration = 0, wall = 0;
+  gjkx::FrameCounters total;  // the whole run's counts
+  double wall = 0;
   try {
     while (!world->done()) {
       const gjkx::FrameReport r = world->step();
-      const gjkx::FrameCounters& c = r.counters;
-      const gjkx::PartTimes& p = r.parts;
       wall += r.wallSeconds;
-      collisions += c.collisions;
-      rollbacks += c.rollbacks;
-      brent += c.brentIterations;
-      brentQueries += c.brentQueries;
-      photo += c.photoFinishes;
-      completeTests += c.completeTests;
-      sdEvaluations += c.sdEvaluations;
-      piecePairs += c.piecePairs;
-      kdopNodes += c.kdopNodes;
-      settled += c.settled;
-      impulseSteps += c.impulseSteps;
-      impulseCaps += c.impulseCaps;
-      brentMax = std::max(brentMax, c.brentMax);
-      tunnelled += c.tunnelled;
-      maxPenetration = std::max(maxPenetration, c.maxPenetration);
-      const double penetration = noChecks ? -1.0 : c.maxPenetration;
-      frames << r.frame << ',' << r.time << ',' << r.wallSeconds << ',' << c.collisionChecks << ',' << c.collisions
-             << ',' << c.rollbacks << ',' << c.brentIterations << ',' << c.photoFinishes << ',' << penetration << ','
-             << c.events << ',' << c.microcollisions << ',' << c.bodiesRolledBack << ',' << c.brentMax << ','
-             << c.completeTests << ',' << c.solverCaps << ',' << (noChecks ? -1 : c.tunnelled) << ','
-             << p.integration << ',' << p.bounds << ',' << p.collisionDetection << ',' << p.impulses << ','
-             << p.ordering << ',' << p.checks << ',' << c.brentQueries << ',' << c.caught << '\n';
+      total += r.counters;
+      frames << gjkx::frameRow(r) << '\n';
+      if (r.status == gjkx::FrameStatus::EventCap)
+        std::cerr << "gjkx_simulate: frame " << r.frame << " reached the event cap; its remaining events were dropped\n";
       for (std::size_t b = 0; b < world->bodies().size(); ++b) {
         const gjkx::BodyState s = world->stateOf(int(b));
         const Eigen::Vector3d x = world->positionOf(int(b));
@@ -165,10 +141,11 @@ int main(int argc, char** argv) {
   std::snprintf(line, sizeof line,
                 "SUMMARY frames=%d sim_s=%.6g wall_s=%.6g collisions=%ld rollbacks=%ld brent_mean=%.4g brent_max=%d "
                 "photo_finish=%.4g max_penetration=%.6g tunnelled=%d",
-                world->frameCount(), world->time(), wall, collisions, rollbacks,
-                brentQueries > 0 ? double(brent) / double(brentQueries) : 0.0, brentMax,
-                brentQueries > 0 ? double(photo) / double(brentQueries) : 0.0, noChecks ? -1.0 : maxPenetration,
-                noChecks ? -1 : tunnelled);
+                world->frameCount(), world->time(), wall, total.collisions, total.rollbacks,
+                total.brentQueries > 0 ? double(total.brentIterations) / double(total.brentQueries) : 0.0,
+                int(total.brentMax),
+                total.brentQueries > 0 ? double(total.photoFinishes) / double(total.brentQueries) : 0.0,
+                noChecks ? -1.0 : total.maxPenetration, noChecks ? -1 : int(total.tunnelled));
   std::printf("%s\n", line);
   std::ofstream summary(out + "/summary.txt");
   summary << line << "\nRUN scene=" << scenePath << " bodies=" << world->bodies().size()
@@ -180,8 +157,9 @@ int main(int argc, char** argv) {
           << " sticking_tolerance=" << impulse.stickingTolerance << "\n";
   // The work done, in counts that do not depend on the machine's load: what a change to the
   // solver or the hierarchy buys shows here even where wall times are noisy.
-  summary << "WORK complete_tests=" << completeTests << " sd_evaluations=" << sdEvaluations
-          << " piece_pairs=" << piecePairs << " kdop_nodes=" << kdopNodes << " settled=" << settled
-          << " impulse_steps=" << impulseSteps << " impulse_caps=" << impulseCaps << "\n";
+  summary << "WORK complete_tests=" << total.completeTests << " sd_evaluations=" << total.sdEvaluations
+          << " piece_pairs=" << total.piecePairs << " kdop_nodes=" << total.kdopNodes << " settled=" << total.settled
+          << " impulse_steps=" << total.impulseSteps << " impulse_caps=" << total.impulseCaps
+          << " spin_restarts=" << total.spinRestarts << " event_caps=" << total.eventCaps << "\n";
   return 0;
 }

@@ -78,14 +78,7 @@ Run run(Ordering ordering) {
   World world(cradle(ordering), settings);
   Run r{ordering, {}, {}, {}};
   while (!world.done()) {
-    const FrameCounters c = world.step().counters;
-    r.total.events += c.events;
-    r.total.collisionChecks += c.collisionChecks;
-    r.total.collisions += c.collisions;
-    r.total.rollbacks += c.rollbacks;
-    r.total.bodiesRolledBack += c.bodiesRolledBack;
-    r.total.tunnelled += c.tunnelled;
-    r.total.maxPenetration = std::max(r.total.maxPenetration, c.maxPenetration);
+    r.total += world.step().counters;
   }
   for (const WorldBody& b : world.bodies()) r.names.push_back(b.name);
   r.trace = world.trace();
@@ -361,7 +354,7 @@ void orderings(const std::string& out, const std::vector<Run>& runs) {
     const Layout L{110, double(W) - 40, top + 52, 46, 9, kFrames / kFrameRate};
     drawStory(c, H, L, r, s, false, r.ordering == Ordering::Timewarp);
     std::printf("%-10s pair checks %ld, collisions %ld, rollbacks %ld, body flights cut %ld, events %ld, "
-                "deepest penetration %.6f m, tunnelled %d\n",
+                "deepest penetration %.6f m, tunnelled %ld\n",
                 orderingName(r.ordering), t.collisionChecks, t.collisions, t.rollbacks, t.bodiesRolledBack,
                 t.events, t.maxPenetration, t.tunnelled);
   }

@@ -118,15 +118,8 @@ int main(int argc, char** argv) {
         return 1;
       }
       wall += r.wallSeconds;
-      total.collisions += r.counters.collisions;
-      total.rollbacks += r.counters.rollbacks;
-      total.collisionChecks += r.counters.collisionChecks;
-      total.brentIterations += r.counters.brentIterations;
-      parts.integration += r.parts.integration;
-      parts.bounds += r.parts.bounds;
-      parts.collisionDetection += r.parts.collisionDetection;
-      parts.impulses += r.parts.impulses;
-      parts.ordering += r.parts.ordering;
+      total += r.counters;
+      parts += r.parts;
     }
     auto share = [&](double part) { return 100 * part / wall; };
     std::printf("%-11s %10.3f %9ld %9ld %11.2f %10ld %8ld | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%%\n",

@@ -2,6 +2,7 @@
 #include <gjkx/timewarp/checks.hpp>
 
 #include <gjkx/gjk/gjk.hpp>
+#include <gjkx/support_mapping/placed.hpp>
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/reference/time_of_impact.hpp>
 

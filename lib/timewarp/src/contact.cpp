@@ -90,4 +90,91 @@ ContactPatch contactPatch(const Shape<double>& shapeA, const Pose<double>& poseA
   return out;
 }
 
+
+// ---------------------------------------------------------------------------------------
+// The contact of a hit
+
+ContactPatch patchOf(const StepContext& step, const Hit& hit, const BodyState& si, const BodyState& sj) {
+  return contactPatch(step.bodies[hit.i].pieces[hit.pieceI], si.worldFromBody, step.bodies[hit.j].pieces[hit.pieceJ],
+                      sj.worldFromBody, hit.pointI, hit.pointJ, hit.normal, step.band(step.settings.tuning.patchDepth));
+}
+
+double approachOn(const StepContext& step, Hit& hit, const ContactPatch& patch, const BodyState& si,
+                  const BodyState& sj) {
+  const auto approach = [&](const Eigen::Vector3d& p) {
+    return hit.normal.dot(step.bodies[hit.j].rigid.velocityAt(sj, p) - step.bodies[hit.i].rigid.velocityAt(si, p));
+  };
+  hit.contact = patch.centre;
+  double vn = approach(patch.centre);
+  // A patch that leaves at its centre may still close at a corner: a tilted body rocking
+  // onto its other edge, an L resting on both legs after an impulse at one. The impulse
+  // then acts at the corner that closes fastest (Mirtich's microcollisions at each
+  // touching corner in turn), or the body would sink there unseen.
+  if (vn >= 0)
+    for (const Eigen::Vector3d& p : patch.points)
+      if (const double v = approach(p); v < vn) {
+        vn = v;
+        hit.contact = p;
+      }
+  return vn;
+}
+
+double approachAt(StepContext& step, Hit& hit, const BodyState& si, const BodyState& sj) {
+  PartTimer timer(step.frame.report.parts.impulses);
+  return approachOn(step, hit, patchOf(step, hit, si, sj), si, sj);
+}
+
+namespace {
+
+/// The unit direction from i's centre of mass to j's (up, +z, when they coincide): the
+/// normal of a first contact whose closest points coincide.
+Eigen::Vector3d centreToCentre(const BodyState& si, const BodyState& sj) {
+  const Eigen::Vector3d d = sj.worldFromBody.translation - si.worldFromBody.translation;
+  return d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+}  // namespace
+
+bool contactNormal(StepContext& step, Hit& hit, double distance, const BodyState& si, const BodyState& sj) {
+  Eigen::Vector3d& known = step.knownNormal(hit.i, hit.pieceI, hit.j, hit.pieceJ);
+  if (distance > step.band(step.settings.tuning.reliableNormal) && hit.normal.squaredNorm() > 0.5) {
+    known = hit.normal;
+    return true;
+  }
+  hit.normal = known.squaredNorm() > 0.5 ? known : centreToCentre(si, sj);
+  return false;
+}
+
+bool contactFromGjk(StepContext& step, const GjkResult<double>& g, int i, int pi, int j, int pj, double t,
+                    const BodyState& si, const BodyState& sj, Hit& hit) {
+  hit.time = t;
+  hit.i = i;
+  hit.j = j;
+  hit.pieceI = pi;
+  hit.pieceJ = pj;
+  const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+  const double distance = g.status == GjkStatus::Overlapping ? 0.0 : z.norm();
+  hit.normal = distance > 0 ? Eigen::Vector3d(z / distance) : Eigen::Vector3d::Zero();
+  if (contactNormal(step, hit, distance, si, sj)) {
+    hit.pointI = g.witnessP;
+    hit.pointJ = g.witnessQ;
+    return true;
+  }
+  hit.pointI = hit.pointJ = 0.5 * (si.worldFromBody.translation + sj.worldFromBody.translation);
+  return false;
+}
+
+bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj,
+               Hit& hit) {
+  GjkResult<double> g;
+  {
+    PartTimer timer(step.frame.report.parts.collisionDetection);
+    g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
+            Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody});
+  }
+  if (g.status != GjkStatus::Overlapping && g.distance > step.scene.collisionTolerance) return false;
+  contactFromGjk(step, g, i, pi, j, pj, t, si, sj, hit);
+  return true;
+}
+
 }  // namespace gjkx

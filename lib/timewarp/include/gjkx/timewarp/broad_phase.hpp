@@ -12,6 +12,7 @@
 #pragma once
 
 #include <gjkx/motion/vector.hpp>
+#include <gjkx/timewarp/body.hpp>
 
 #include <utility>
 #include <vector>
@@ -64,5 +65,18 @@ std::vector<std::pair<int, int>> overlappingPairs(const std::vector<Bounds>& box
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
+
+/// The swept bounds of `body` along `path` over [t0, t1]: a static body's own box; a
+/// turning body's centre of mass at both ends grown by its bounding radius (every
+/// orientation may occur); a body that does not turn, its shape's box at both ends. Each
+/// grown by the ballistic bulge |g| T^2 / 8 of the path off its chord.
+Bounds sweptBounds(const WorldBody& body, const FreeFlight& path, double t0, double t1, const Eigen::Vector3d& gravity);
+
+struct StepContext;
+
+/// The body pairs whose swept bounds over [t0, t1] (grown by the collision tolerance)
+/// overlap, but for pairs of two resting bodies (static or asleep: neither can move); with
+/// `only` >= 0, only the pairs of bodies `only` and `also`. Timed as the bounds' part.
+std::vector<std::pair<int, int>> candidatePairs(StepContext& step, double t0, double t1, int only = -1, int also = -1);
 
 }  // namespace gjkx

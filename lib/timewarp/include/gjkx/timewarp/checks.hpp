@@ -17,11 +17,13 @@
 #pragma once
 
 #include <gjkx/motion/pose.hpp>
-#include <gjkx/timewarp/world.hpp>
+#include <gjkx/timewarp/body.hpp>
+#include <gjkx/timewarp/step.hpp>
 
 #include <array>
 #include <algorithm>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -109,5 +111,12 @@ inline double tunnellingThreshold(double distanceAtStart, double tolerance) {
 /// most `lipschitz` per unit time (reference::firstContact, 8 samples and bisection).
 bool firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
                            double t1);
+
+/// The independent checks of the frame [T0, T1] just run (the paths each body took in it,
+/// FrameState::paths): the deepest penetration at T1, and the pairs with no collision
+/// reported that interpenetrated during the frame (tunnellingThreshold, by dense sampling
+/// with a Lipschitz bound on their distance), into the frame's counters.
+void checkFrame(StepContext& step, const std::vector<std::shared_ptr<const ReferenceBody>>& bodies, double T0,
+                double T1);
 
 }  // namespace gjkx

@@ -1,0 +1,89 @@
+/// @file
+/// @brief The bodies of a world, built from a scene (§6): each a set of convex pieces about its
+/// centre of mass, its mass properties and its path.
+///
+/// Every body is a set of convex pieces (§6): a convex body is one piece, a mesh body the
+/// pieces of its convex decomposition (gjkx/mesh), a static mesh one thin prism per
+/// triangle ("collision detection at the polygonal level"). The body frame is put at the
+/// centre of mass, since free flight turns a body about it. The pieces are kept here in
+/// double, what the contact data, the mass and the independent checks need; the narrow
+/// phase (narrow_phase.hpp) makes them again in the scalar of collision detection from the
+/// points kept beside them (`PieceSource`), so a float scene's float hulls are the hulls of
+/// the rounded points, not rounded hulls.
+///
+/// buildBodies is the one way a runner gets bodies from a scene: the world calls it, and so
+/// does the Bullet runner of chapter 08, which gives Bullet the same masses and shapes.
+#pragma once
+
+#include <gjkx/dynamics/free_flight.hpp>
+#include <gjkx/dynamics/rigid_body.hpp>
+#include <gjkx/motion/motion.hpp>
+#include <gjkx/support_mapping/shape.hpp>
+#include <gjkx/timewarp/scene.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gjkx {
+
+/// What a body's convex pieces are made from, in the body frame (centre of mass at the
+/// origin), so that they can be made in either scalar type.
+struct PieceSource {
+  /// A convex body: its spec, a polytope's points moved to the body frame.
+  ShapeSpec convex;
+  /// A mesh body: each piece's points (the hull of each is the piece). Empty for a convex body.
+  std::vector<std::vector<Eigen::Vector3d>> meshPieces;
+  /// True for a mesh body (its pieces are held in a 14-DOP hierarchy by the narrow phase).
+  bool isMesh() const { return !meshPieces.empty(); }
+};
+
+/// A convex shape of a scene in scalar type S, at the given points (a polytope's, already in
+/// the body frame; ignored for the other shapes). Throws std::invalid_argument for a mesh.
+template <typename S>
+Shape<S> convexShapeOf(const ShapeSpec& spec, const std::vector<Eigen::Vector3d>& points);
+
+/// A body's convex pieces in scalar type S (PieceSource).
+template <typename S>
+std::vector<Shape<S>> piecesOf(const PieceSource& source);
+
+/// A body of the world: its shape about its centre of mass, its mass, its path.
+struct WorldBody {
+  std::string name;                           ///< its name in the scene
+  Shape<double> shape = Sphere<double>(0);    ///< its shape (a mesh body: the hull of its pieces), body frame at the centre of mass
+  std::vector<Shape<double>> pieces;          ///< its convex pieces (a convex body: `shape` alone)
+  PieceSource source;                         ///< what the pieces are made from (for the other scalar)
+  Eigen::Vector3d frameOrigin = Eigen::Vector3d::Zero();  ///< the scene's shape frame origin, in the body frame (minus the centre of mass)
+  RigidBody rigid = RigidBody::fixed();       ///< mass properties (or static)
+  double radius = 0;                          ///< bounding radius about the centre of mass
+  FreeFlight path;                            ///< its path from its last event to its local time `path.t1` (set it with setPath)
+  int version = 0;                            ///< bumped when its path changes: events that used the old one are stale
+  /// Counts every path it is given (setPath), never reset: what a cache of the path keys on.
+  long pathSerial = 0;
+  /// Caught at rest against a static body (response.hpp), or settled at a frame's end
+  /// with too little kinetic energy to leave the tolerance band (sleep.hpp), and not
+  /// struck since: it is held where it stands, gravity off, and its pairs with static and
+  /// sleeping bodies are not looked at, until a collision with a moving body wakes it.
+  bool asleep = false;
+  /// How long (simulated s) it has been too slow to leave the tolerance band and struck by
+  /// nothing but resting or slow bodies (sleep.hpp); it settles after StepTuning::settleSeconds.
+  double slowFor = 0;
+  /// The gravity its path feels: none while it sleeps.
+  Eigen::Vector3d gravity(const Eigen::Vector3d& sceneGravity) const {
+    return asleep ? Eigen::Vector3d::Zero() : sceneGravity;
+  }
+  /// A body that cannot move of its own accord: static, or asleep.
+  bool resting() const { return asleep || rigid.isStatic(); }
+  /// Sets its path.
+  void setPath(FreeFlight next) {
+    path = std::move(next);
+    ++pathSerial;
+  }
+};
+
+/// The bodies of `scene`: each shape read (a mesh through Assimp, decomposed once however
+/// many bodies use it), its mass properties, its frame moved to the centre of mass, and its
+/// start state flown for no time (a static body: over the whole `duration`, since it is
+/// never integrated again). Throws std::invalid_argument naming the body and the field.
+std::vector<WorldBody> buildBodies(const Scene& scene, double duration);
+
+}  // namespace gjkx

@@ -1,0 +1,134 @@
+/// @file
+/// @brief How a world is run (§5–§6): the solver's switches and every tunable of a step, each
+/// with its unit and the reason for its default, checked by name where it enters.
+///
+/// A scene (scene.hpp) says what is simulated: bodies, gravity, e, μ, the collision
+/// tolerance, and the frame rate. These settings say how: which extrusion test, which warm
+/// starts, whether the independent checks run, and the constants of the step. Most of those
+/// constants are multiples of the scene's collision tolerance `tol` (§2.3: bodies closer
+/// than `tol` touch), so a scene at another scale keeps the same behaviour.
+#pragma once
+
+#include <gjkx/dynamics/impulse.hpp>
+#include <gjkx/extrusion/extrusion.hpp>
+
+#include <string>
+
+namespace gjkx {
+
+/// The constants of a step. The defaults are those every measurement in docs 07 and 08 was
+/// made with; each says why it is what it is.
+struct StepTuning {
+  // --- The collision tolerance band (multiples of the scene's tolerance `tol`) ---
+
+  /// The contact patch: the points of each touching piece within this many `tol` of its
+  /// supporting plane (contact.hpp). 2: a box lying flat within the band touches with its
+  /// face; tilted by more than two tolerances across it, with its lowest edge or corner.
+  double patchDepth = 2;
+  /// A time-of-impact restart that finds the pieces within this many `tol`, once the query
+  /// has taken `acceptedAfter` Brent iterations, is a hit (`ToiSettings::acceptedDistance`):
+  /// a grazing pass just above the tolerance ends there rather than being proven free of
+  /// contact link by link. 1.5: a contact found within 1.5 tolerances is as good to the
+  /// impulse as one found at exactly one (docs 08 measures the trade against penetration).
+  double acceptedBand = 1.5;
+  /// Brent iterations after which the accepted band applies (`ToiSettings::acceptedAfter`).
+  /// 24: short queries end as §5 ends them; from the 24th iteration on, the torso's deepest
+  /// penetration grew least (0.56 mm against 1.36 mm from the 16th).
+  int acceptedAfter = 24;
+  /// The time tolerance of a query is the time the pair needs to close this many `tol` at
+  /// its fastest (at most a quarter of the interval). 0.5: the time of impact is needed to
+  /// within the band, not to sqrt(eps) of the interval.
+  double closingBand = 0.5;
+  /// Closest points nearer than this many `tol` (or pieces overlapping) give no reliable
+  /// normal: their direction is round-off, and the pair's last reliable normal is used
+  /// instead (contact.hpp). 1e-2: a hundredth of the band is far above double's round-off
+  /// and far below any distance the solver reports a hit at.
+  double reliableNormal = 1e-2;
+  /// Settling (sleep.hpp): a body is slow when its kinetic energy could not lift its centre
+  /// of mass by this many `tol` against gravity (E_k < m |g| tol × settleEnergy). 1: such a
+  /// body only rattles inside the band.
+  double settleEnergy = 1;
+
+  // --- Speeds and times ---
+
+  /// Two bodies whose normal speed at the contact is above -approachSpeed (m/s) are at rest
+  /// against each other, not approaching. 1e-9: two bodies at rest approach by round-off
+  /// (4e-16 m/s), which no impulse can change.
+  double approachSpeed = 1e-9;
+  /// A contact that is leaving is looked at again once it can have left the band, but at
+  /// least this fraction of a frame later (so a frame holds at most 1/x looks). 1e-4.
+  double minLookAhead = 1e-4;
+  /// ... and at most this fraction of a frame later. 1/16: a slow leave is looked at again
+  /// within the frame, in case gravity turns it round.
+  double maxLookAhead = 1.0 / 16;
+  /// A path shorter than this fraction of a frame is not kept (it may not exist in float):
+  /// the body flies on from the time of impact for that long. 1e-3.
+  double minPath = 1e-3;
+  /// A body must stay slow for this long (simulated seconds) before it may settle. 0.5: a
+  /// domino just starting to topple is slow too, and is fast by then.
+  double settleSeconds = 0.5;
+
+  // --- Zeno's wedge and the instant pass (response.hpp) ---
+
+  /// A body struck by more than this many microcollisions in a frame along normals more than
+  /// a right angle apart is caught (stopped where it stands). 32: a box sliding on a floor is
+  /// struck along one normal only, a rib wedged between a stem and a leaf along two.
+  int caughtAfter = 32;
+  /// A body in more than this many collisions at the very same instant is caught. 8: a light
+  /// rod on two corners alternates between them at one instant (2,600 times for a cartilage).
+  int sameInstantAfter = 8;
+  /// An instant pass ends after this many impulses, leaving what still closes to the pair
+  /// checks. 256: well above the torso's longest chain at its crash.
+  int instantImpulses = 256;
+
+  // --- Caps ---
+
+  /// A frame's events are capped at eventCap + eventCapPerBody × bodies; past it the frame
+  /// ends with the status EventCap (its remaining events dropped, counted in frames.csv).
+  /// 200,000 + 1,000 per body: ten times the torso's busiest frame.
+  long eventCap = 200000;
+  /// See eventCap.
+  long eventCapPerBody = 1000;
+  /// A frame is run in intervals of at most a quarter turn of its fastest body; at the
+  /// start of a frame at most this many (more come only from a spin overflow). 64.
+  int maxIntervals = 64;
+  /// A frame that would need more intervals than this for a body's spin stops the run with
+  /// an error naming the body (raise the scene's frame rate). 4096.
+  int maxSpinIntervals = 4096;
+
+  /// Throws std::invalid_argument naming `field`.member for a value out of its range.
+  void validate(const std::string& field) const;
+};
+
+/// How a world is run: the solver's switches and the step's tunables (what a scene *is*
+/// stays in scene.hpp).
+struct WorldSettings {
+  /// The extrusion test of the solver: the paper's or the certified one (never misses
+  /// under rotation; gjkx/extrusion/certified_margin.hpp). The default is certified.
+  ExtrusionVariant variant = ExtrusionVariant::Certified;
+  /// Warm starts inside each time-of-impact query: every complete extrusion test after the
+  /// first starts from the last one's simplex and support hints (`ToiSettings::warmStart`).
+  bool warmStarts = true;
+  /// Temporal coherence between queries (§2): each convex piece pair's query starts where
+  /// the pair's last one ended (its separating vector, tried first, and GJK's simplex).
+  /// Needs `warmStarts`.
+  bool coherence = true;
+  /// Keep each body pair's 14-DOP front between frames (generalized front tracking, kdop's
+  /// `BodyPairQuery`); false traverses the hierarchies afresh at every query.
+  bool frontTracking = true;
+  /// Run the independent checks (penetration at each frame's end, tunnelling by dense sampling).
+  bool checks = true;
+  /// Record what the orderings did, event by event (chapter 07 draws it).
+  bool trace = false;
+  /// The impulse integration's tolerances and step cap (gjkx/dynamics/impulse.hpp, §6); its
+  /// microcollision speed is not taken from here but from the scene (its gravity and
+  /// collision tolerance). Checked when the world is built ("settings.impulse...").
+  ImpulseSettings impulse;
+  /// The constants of a step ("settings.tuning...").
+  StepTuning tuning;
+
+  /// Throws std::invalid_argument naming `field`.member for a value out of its range.
+  void validate(const std::string& field) const;
+};
+
+}  // namespace gjkx

@@ -1,0 +1,270 @@
+// The narrow phase (narrow_phase.hpp): the paper's solver on the piece pairs of a body pair.
+#include <gjkx/timewarp/narrow_phase.hpp>
+
+#include <gjkx/gjk/gjk.hpp>
+#include <gjkx/timewarp/contact.hpp>
+#include <gjkx/timewarp/motion_cast.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <type_traits>
+
+namespace gjkx {
+
+namespace {
+
+/// How fast any point of a body can move over its path: |v| + |w| r at either end of it,
+/// with the change gravity can make within the path (a bound for the time tolerance only).
+double speedBound(const WorldBody& body) {
+  if (body.rigid.isStatic()) return 0;
+  const FreeFlight& path = body.path;
+  double bound = 0;
+  for (const BodyState* s : {&path.start, &path.end})
+    bound = std::max(bound, s->velocity.norm() + s->angularVelocity.norm() * body.radius);
+  return bound;
+}
+
+}  // namespace
+
+template <typename S>
+NarrowPhase<S>::NarrowPhase(const std::vector<WorldBody>& bodies) {
+  bvh_.resize(bodies.size());
+  kdops_.resize(bodies.size());
+  if constexpr (std::is_same_v<S, float>) {
+    motions_.resize(bodies.size(), {-1, Motion<S>{}});
+    for (const WorldBody& body : bodies) pieces_.push_back(gjkx::piecesOf<S>(body.source));
+  }
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!bodies[b].source.isMesh()) continue;
+    std::vector<Polytope<S>> polytopes;
+    for (const Shape<S>& piece : piecesOf(bodies, int(b))) polytopes.push_back(std::get<Polytope<S>>(piece.variant()));
+    bvh_[b] = std::make_shared<const Bvh<S>>(std::move(polytopes));
+  }
+}
+
+template <typename S>
+const std::vector<Shape<S>>& NarrowPhase<S>::piecesOf(const std::vector<WorldBody>& bodies, int b) const {
+  if constexpr (std::is_same_v<S, float>) return pieces_[std::size_t(b)];
+  else return bodies[std::size_t(b)].pieces;
+}
+
+template <typename S>
+const Motion<S>& NarrowPhase<S>::motionOf(const WorldBody& body, int b) {
+  if constexpr (std::is_same_v<S, float>) {
+    auto& [serial, motion] = motions_[std::size_t(b)];
+    if (serial != body.pathSerial) {  // rounded once per path (converting at each query took a tenth of the torso's run)
+      motion = castMotion<float>(body.path.motion);
+      serial = body.pathSerial;
+    }
+    return motion;
+  } else {
+    (void)b;
+    return body.path.motion;
+  }
+}
+
+/// The time-of-impact query of piece pi of body i and piece pj of body j over [t0, t1].
+template <typename S>
+ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1) {
+  const WorldBody& P = step.bodies[i];
+  const WorldBody& Q = step.bodies[j];
+  const StepTuning& tuning = step.settings.tuning;
+  const double tolerance = step.scene.collisionTolerance;
+  const Moving<Shape<S>> movingP{piecesOf(step.bodies, i)[pi], motionOf(P, i)};
+  const Moving<Shape<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
+  ToiSettings<S> settings;
+  settings.collisionTolerance = S(tolerance);
+  settings.variant = step.settings.variant;
+  settings.warmStart = step.settings.warmStarts;
+  // The time of impact is needed to within the tolerance band, not to the solver's default
+  // of sqrt(eps) of the interval (6e-10 s of a frame in double): a contact found where the
+  // bodies are within 1.5 tolerances is as good to the impulse as one found at exactly one.
+  // So the time tolerance is the time the pair needs to close half a tolerance at its
+  // fastest (StepTuning::closingBand). (Under rotation the solver's restarts halve the gap
+  // to the contact one at a time, time_of_impact.hpp: this ends them some twenty restarts
+  // sooner.) For the same reason a restart that finds the bodies within the accepted band,
+  // once the query has taken `acceptedAfter` Brent iterations, is a hit: a grazing pass just
+  // above the tolerance ends there rather than being proven free of contact link by link
+  // (StepTuning::acceptedBand says what it costs in penetration).
+  settings.acceptedDistance = S(tuning.acceptedBand * tolerance);
+  settings.acceptedAfter = tuning.acceptedAfter;
+  const double closing = speedBound(P) + speedBound(Q);
+  if (closing > 0)
+    settings.timeTolerance = std::max(settings.timeTolerance,
+                                      S(std::min(0.25, tuning.closingBand * tolerance / (closing * (t1 - t0)))));
+  ExtrusionCache<S>* coherence = nullptr;
+  if (step.settings.coherence && step.settings.warmStarts) coherence = &coherence_[step.piecePairKey(i, pi, j, pj)];
+  const ToiResult<S> r = timeOfImpact(movingP, movingQ, S(t0), S(t1), settings, nullptr, coherence);
+  ToiResult<double> out;
+  out.status = r.status;
+  out.time = std::clamp(double(r.time), t0, t1);
+  out.distance = double(r.distance);
+  out.normal = r.normal.template cast<double>();
+  out.witnessP = r.witnessP.template cast<double>();
+  out.witnessQ = r.witnessQ.template cast<double>();
+  out.brentIterations = r.brentIterations;
+  out.gjkRuns = r.gjkRuns;
+  out.sdEvaluations = r.sdEvaluations;
+  out.restarts = r.restarts;
+  return out;
+}
+
+/// The piece pairs of bodies i and j that may touch over [t0, t1]: the one pair of two
+/// convex bodies; for mesh bodies, the pairs the 14-DOP hierarchies cannot prove apart
+/// (kdop's body-pair query, its front kept between frames for the pair); a mesh against a
+/// convex body that is not a polytope: every piece.
+template <typename S>
+std::vector<PiecePair> NarrowPhase<S>::piecePairs(StepContext& step, int i, int j, double t0, double t1) {
+  const std::size_t piecesI = step.bodies[i].pieces.size(), piecesJ = step.bodies[j].pieces.size();
+  if (piecesI == 1 && piecesJ == 1) return {PiecePair{0, 0}};
+  std::vector<PiecePair> pairs;
+  if (bvh_[i] && bvh_[j]) {
+    PartTimer timer(step.frame.report.parts.bounds);
+    auto& query = fronts_[(long long)(i) * (long long)(step.bodies.size()) + j];
+    if (!query) {
+      BodyPairSettings<S> settings;
+      settings.tolerance = S(step.scene.collisionTolerance);
+      settings.frontTracking = step.settings.frontTracking;
+      // Each body's 14-DOPs at a pose are shared by all its pairs: after a collision every
+      // pair of the struck body is queried at the same two poses, and its nodes' slab
+      // ends are computed once for all of them (body_kdops.hpp).
+      for (int b : {i, j})
+        if (!kdops_[b]) kdops_[b] = std::make_unique<BodyKdops<S>>(*bvh_[b]);
+      query = std::make_unique<BodyPairQuery<S>>(*kdops_[i], *kdops_[j], settings);
+    }
+    BodyPairOutput<S> out = query->query(motionOf(step.bodies[i], i), motionOf(step.bodies[j], j), S(t0), S(t1));
+    step.frame.report.counters.kdopNodes += out.counters.nodesVisited;
+    pairs = std::move(out.pairs);
+  } else {
+    for (int a = 0; a < int(piecesI); ++a)
+      for (int b = 0; b < int(piecesJ); ++b) pairs.push_back(PiecePair{a, b});
+  }
+  step.frame.report.counters.piecePairs += long(pairs.size());
+  return pairs;
+}
+
+template <typename S>
+bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, double t1, Hit& hit) {
+  // The pair's collision is the earliest of its pieces'.
+  bool found = false;
+  Hit piece;
+  for (const PiecePair& p : piecePairs(step, i, j, t0, t1)) {
+    if (!checkPieces(step, i, p.a, j, p.b, t0, t1, piece)) continue;
+    if (!found || piece.time < hit.time) hit = piece;
+    found = true;
+  }
+  return found;
+}
+
+template <typename S>
+bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, Hit& hit) {
+  FrameCounters& c = step.frame.report.counters;
+  const StepTuning& tuning = step.settings.tuning;
+  const double frameLength = step.frameLength();
+  // A contact within the tolerance that is already moving apart is no collision: look again
+  // once the bodies can have left the tolerance band, until the interval is covered (each
+  // look moves on by at least minLookAhead of a frame; the rest of an interval is never
+  // left unchecked).
+  while (t0 < t1) {
+    ToiResult<double> r;
+    {
+      PartTimer timer(step.frame.report.parts.collisionDetection);
+      r = query(step, i, pi, j, pj, t0, t1);
+    }
+    ++c.collisionChecks;
+    c.brentIterations += r.brentIterations;
+    c.brentMax = std::max(c.brentMax, long(r.brentIterations));
+    c.completeTests += r.gjkRuns;
+    c.sdEvaluations += r.sdEvaluations;
+    step.record(TraceEvent::Kind::Check, i, j, t0, t1);
+    if (r.status == ToiStatus::Hit || r.status == ToiStatus::PhotoFinish ||
+        (r.status == ToiStatus::IterationCap && r.brentIterations > 0))
+      ++c.brentQueries;
+    switch (r.status) {
+      case ToiStatus::NoCollision: return false;
+      case ToiStatus::Separating: touched(step, i, pi, j, pj); return false;  // in contact, leaving
+      case ToiStatus::PhotoFinish: ++c.photoFinishes; return false;
+      case ToiStatus::NumericalFailure:
+        throw std::runtime_error("bodies '" + step.bodies[i].name + "' and '" + step.bodies[j].name +
+                                 "': the time-of-impact solver met a non-finite support point near t = " +
+                                 std::to_string(t0));
+      case ToiStatus::IterationCap: ++c.solverCaps; [[fallthrough]];  // undecided: treated as a collision
+      case ToiStatus::Hit:
+      case ToiStatus::StartsPenetrating: break;
+    }
+    hit.time = r.time;
+    hit.i = i;
+    hit.j = j;
+    hit.pieceI = pi;
+    hit.pieceJ = pj;
+    hit.versionI = step.bodies[i].version;
+    hit.versionJ = step.bodies[j].version;
+    hit.pointI = r.witnessP;
+    hit.pointJ = r.witnessQ;
+    hit.normal = r.normal;
+    const BodyState si = step.bodies[i].path.stateAt(hit.time), sj = step.bodies[j].path.stateAt(hit.time);
+    if constexpr (std::is_same_v<S, float>) {
+      // Float decides when; the impulse needs where, better than float's witnesses give
+      // it: at a distance of one tolerance (3.45e-4) their round-off (~1e-7 of the
+      // coordinates) tilts the normal by 1e-3, enough to make a 6 m floor touch at a far
+      // corner. So the contact data are taken again in double at the time found.
+      PartTimer timer(step.frame.report.parts.collisionDetection);
+      const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
+                                      Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody});
+      if (g.status != GjkStatus::Overlapping) {
+        r.distance = g.distance;
+        hit.pointI = g.witnessP;
+        hit.pointJ = g.witnessQ;
+        const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+        hit.normal = z.norm() > 0 ? Eigen::Vector3d(z.normalized()) : Eigen::Vector3d::Zero();
+      }
+    }
+    contactNormal(step, hit, r.distance, si, sj);
+    touched(step, i, pi, j, pj);
+    const double vn = approachAt(step, hit, si, sj);
+    // Approaching: a collision. Two bodies at rest against each other (a caught body, see
+    // response.hpp) approach by round-off (4e-16 m/s), and an impulse cannot change that:
+    // they are taken as at rest, and looked at again once gravity has moved them.
+    if (vn < -tuning.approachSpeed) return true;
+    const double leave = step.scene.collisionTolerance / std::max(vn, 1e-12);
+    t0 = hit.time + std::clamp(leave, tuning.minLookAhead * frameLength, tuning.maxLookAhead * frameLength);
+  }
+  return false;
+}
+
+template <typename S>
+bool NarrowPhase<S>::touchingAt(StepContext& step, int i, int j, double t, const BodyState& si, const BodyState& sj,
+                                Hit& hit) {
+  const std::vector<PiecePair> pairs = piecePairs(step, i, j, t, t);
+  bool found = false;
+  for (const PiecePair& p : pairs) {
+    ++step.frame.report.counters.collisionChecks;
+    GjkResult<double> g;
+    {
+      PartTimer timer(step.frame.report.parts.collisionDetection);
+      const auto r = gjk(Placed<Shape<S>>{piecesOf(step.bodies, i)[p.a], castPose<S>(si.worldFromBody)},
+                         Placed<Shape<S>>{piecesOf(step.bodies, j)[p.b], castPose<S>(sj.worldFromBody)});
+      g.status = r.status;
+      g.distance = double(r.distance);
+      g.witnessP = r.witnessP.template cast<double>();
+      g.witnessQ = r.witnessQ.template cast<double>();
+    }
+    const bool touching = g.status == GjkStatus::Overlapping || g.distance <= step.scene.collisionTolerance;
+    if (!touching) {
+      // Apart: the direction of the closest points is the pair's reliable normal.
+      const Eigen::Vector3d z = g.witnessQ - g.witnessP;
+      if (z.norm() > step.band(step.settings.tuning.reliableNormal)) step.knownNormal(i, p.a, j, p.b) = z.normalized();
+      continue;
+    }
+    // The first touching piece pair found speaks for the body pair.
+    if (found) continue;
+    found = true;
+    contactFromGjk(step, g, i, p.a, j, p.b, t, si, sj, hit);
+  }
+  return found;
+}
+
+template class NarrowPhase<float>;
+template class NarrowPhase<double>;
+
+}  // namespace gjkx
