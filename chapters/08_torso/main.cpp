@@ -11,8 +11,9 @@
 //   fig06-torso-running-time.png: Fig. 6, "Running Time for Torso-Plant Simulation": the
 //                           execution time of each frame over its simulated time, stacked
 //                           by part, against simulated time, drawn by gnuplot from the same
-//                           run's frames.csv (script and data in data/ of the figures
-//                           folder). Without the run, or without gnuplot, it is skipped.
+//                           run's frames.csv (the script running_time.gp beside this file,
+//                           its data in data/ of the figures folder). Without the run, or
+//                           without gnuplot, it is skipped.
 // Options: --run DIR reads DIR/bodies.csv and DIR/frames.csv instead; --frames DIR writes one
 // PNG per frame of the run (an animation); --seed N and --reduced must match how the run's
 // scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
@@ -36,6 +37,9 @@ using torso::V3;
 
 #ifndef GJKX_TORSO_RUN
 #define GJKX_TORSO_RUN "figures/data/torso-run"
+#endif
+#ifndef GJKX_TORSO_RUNNING_TIME_GP  // Fig. 6's gnuplot script, beside this file
+#define GJKX_TORSO_RUNNING_TIME_GP "chapters/08_torso/running_time.gp"
 #endif
 
 namespace {
@@ -79,9 +83,7 @@ std::vector<Frame> readRun(const std::string& path, const torso::SceneLayout& la
   std::vector<Frame> frames;
   std::vector<int> seen;
   for (int row = 2; std::getline(in, line); ++row) {
-    std::vector<std::string> cell;
-    std::stringstream fields(line);
-    for (std::string c; std::getline(fields, c, ',');) cell.push_back(c);
+    const std::vector<std::string> cell = chapter::csvFields(line);
     if (cell.size() < 13) throw std::runtime_error(path + ":" + std::to_string(row) + ": fewer than 13 columns");
     const int frame = std::stoi(cell[0]);
     if (frames.empty() || frames.back().frame != frame) {
@@ -197,14 +199,27 @@ std::string runDescription(const torso::Run& run) {
          key["frame_rate"] + " frames/s";
 }
 
+/// A string for gnuplot: single-quoted, so that nothing in it is an escape ('' is a quote).
+std::string gnuplotString(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  return quoted + "'";
+}
+
+/// One word for the shell: single-quoted, a quote in it closed, escaped and reopened.
+std::string shellWord(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 /// Fig. 6 from `run`'s frames.csv: per frame, the method's wall time over the frame's
 /// simulated time, stacked by part (methodParts()), against the time at the frame's end;
-/// the real-time line y = 1 and the paper's range 1.0-7.9 for comparison. When the frames
-/// and the paper's range span more than a factor 30, a stack on a log axis would misstate
-/// the parts' shares, so the figure has two panels on one time axis: above, the total on a
-/// log axis against real time and the paper; below, the stack by part on a linear axis.
-/// Writes OUT/data/fig06-torso-running-time.csv (the stacked values) and .gp, then runs
-/// gnuplot there; returns false (and says why) when gnuplot is missing or fails.
+/// the real-time line y = 1 and the paper's range 1.0-7.9 for comparison. Writes
+/// OUT/data/fig06-torso-running-time.csv (the stacked values), then runs the gnuplot script
+/// running_time.gp beside this file there, passing it the data, the axes' ranges and the
+/// texts (when the frames and the paper's range span more than a factor 30 it draws two
+/// panels: see the script); returns false (and says why) when gnuplot is missing or fails.
 bool runningTimeFigure(const std::string& out, const torso::Run& run) {
   using P = torso::PaperFigures;
   const auto& parts = torso::methodParts();
@@ -230,73 +245,34 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run) {
     double sum = 0;
     for (const auto& part : parts) {
       sum += run.at(part.first)[k] / run.frameLength(k);
-      char cell[32];
-      std::snprintf(cell, sizeof cell, ",%.6g", sum);
-      row += cell;
+      row += chapter::format(",%.6g", sum);
     }
     csv << run.at("time")[k] - run.frameLength(k) << row << '\n' << run.at("time")[k] << row << '\n';
   }
   csv.close();
 
-  const char* colours[] = {"#4e79a7", "#59a14f", "#e15759", "#f28e2b", "#b07aa1"};
-  const std::string data = "'" + name + ".csv' skip 2";
-  const int total = int(parts.size()) + 1;  // the column of the top of the stack
-  char band[120], checksNote[160];
-  std::snprintf(band, sizeof band, "paper (500 MHz Pentium III): %.1f to %.1f", P::ratioMin, P::ratioMax);
-  std::snprintf(checksNote, sizeof checksNote, "(not the method): %.0f%% of wall time",
-                100 * (wall > 0 ? checks / wall : 0));
-  std::ofstream gp(folder + "/" + name + ".gp");
-  gp << "# gnuplot script written by 08_torso (chapter 08): gnuplot " << name << ".gp\n";
-  gp << "set terminal pngcairo size 1200," << (twoPanels ? 860 : 620) << " font 'sans,11'\nset output '../" << name << ".png'\n";
-  gp << "set datafile separator ','\nset termoption noenhanced\n";
-  gp << "set xrange [0:" << run.at("time").back() << "]\nset grid ytics lc rgb '#dddddd'\n";
-  gp << "set lmargin at screen 0.08\nset rmargin at screen 0.64\n";
-  gp << "set key at screen 0.655, graph 1 left top Left reverse samplen 2 spacing 1.2\n";
-  gp << "set style fill solid 0.9 noborder\n";
-  gp << "set multiplot title \"Fig. 6: running time of the torso-plant simulation\\n" << runDescription(run)
-     << "\" font ',12'\n";
-  // The paper's range and real time, with our total (the whole stack) or the stack itself.
-  const std::string paperAndRealTime = std::to_string(P::ratioMin) + " with filledcurves y=" + std::to_string(P::ratioMax) +
-                                       " fs transparent solid 0.25 lc rgb '#999999' title '" + band + "', \\\n     " +
-                                       std::to_string(P::ratioMax) + " with lines dt 2 lw 1.5 lc rgb '#777777' notitle, \\\n     " +
-                                       std::to_string(P::ratioMin) + " with lines lw 2 lc rgb '#000000' title 'real time (execution = simulation)'";
-  auto stack = [&](bool withBand) {
-    gp << "plot ";
-    for (std::size_t p = parts.size(); p-- > 0;)
-      gp << data << " using 1:" << (p == 0 ? std::string("(0)") : std::to_string(p + 1)) << ":" << p + 2
-         << " with filledcurves lc rgb '" << colours[p] << "' title '" << parts[p].second << "', \\\n     ";
-    gp << "NaN with lines lc rgb '#ffffff' title 'drawing: none (gjkx_simulate draws no image)', \\\n     ";
-    gp << "NaN with lines lc rgb '#ffffff' title 'not stacked: the independent checks', \\\n     ";
-    gp << "NaN with lines lc rgb '#ffffff' title '" << checksNote << "'";
-    if (withBand) gp << ", \\\n     " << paperAndRealTime;
-    gp << "\n";
-  };
-  if (twoPanels) {
-    const double bottom = std::pow(10.0, std::floor(std::log10(lo)));
-    const double top = std::pow(10.0, std::ceil(std::log10(hi * 1.5)));
-    gp << "set tmargin at screen 0.89\nset bmargin at screen 0.56\n";
-    gp << "set logscale y\nset format y '%g'\nset yrange [" << bottom << ":" << top << "]\nset format x ''\n";
-    gp << "set ylabel 'execution / simulation time' offset 1,0\n";
-    gp << "plot " << paperAndRealTime << ", \\\n     " << data << " using 1:($" << total << " > " << bottom << " ? $" << total
-       << " : " << bottom << ") with lines lw 2 lc rgb '" << colours[2] << "' title 'ours: every part (the top of the stack below)'\n";
-    gp << "unset logscale y\nset format x '%g'\nset tmargin at screen 0.50\nset bmargin at screen 0.08\n";
-    gp << "set yrange [0:" << ours * 1.1 << "]\nset format y '%g'\n";
-    gp << "set ylabel 'execution / simulation time (linear: the parts)' offset 1,0\nset xlabel 'simulated time (s)'\n";
-    stack(false);
-  } else {
-    gp << "set tmargin at screen 0.87\nset bmargin at screen 0.11\nset yrange [0:" << hi * 1.1 << "]\n";
-    gp << "set ylabel 'execution time / simulation time'\nset xlabel 'simulated time (s)'\n";
-    stack(true);
-  }
-  gp << "unset multiplot\n";
-  gp.close();
+  // The script's settings (running_time.gp says what each is), numbers as C++ streams print them.
+  std::ostringstream set;
+  set << "data=" << gnuplotString(name + ".csv") << "; out=" << gnuplotString("../" + name + ".png")
+      << "; description=" << gnuplotString(runDescription(run)) << "; parts=" << parts.size();
+  for (std::size_t p = 0; p < parts.size(); ++p) set << "; part" << p + 1 << "=" << gnuplotString(parts[p].second);
+  set << "; checksNote="
+      << gnuplotString(chapter::format("(not the method): %.0f%% of wall time", 100 * (wall > 0 ? checks / wall : 0)))
+      << "; band=" << gnuplotString(chapter::format("paper (500 MHz Pentium III): %.1f to %.1f", P::ratioMin, P::ratioMax))
+      << "; ratioMin=" << std::to_string(P::ratioMin) << "; ratioMax=" << std::to_string(P::ratioMax)
+      << "; xmax=" << run.at("time").back() << "; twoPanels=" << (twoPanels ? 1 : 0);
+  if (twoPanels)
+    set << "; bottom=" << std::pow(10.0, std::floor(std::log10(lo))) << "; top=" << std::pow(10.0, std::ceil(std::log10(hi * 1.5)))
+        << "; stackTop=" << ours * 1.1;
+  else
+    set << "; stackTop=" << hi * 1.1;
   if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
-    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".gp, skipped Fig. 6\n";
+    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped Fig. 6\n";
     return false;
   }
-  const std::string command = "cd '" + folder + "' && gnuplot '" + name + ".gp'";
+  const std::string command = "cd " + shellWord(folder) + " && gnuplot -e " + shellWord(set.str()) + " " + shellWord(GJKX_TORSO_RUNNING_TIME_GP);
   if (std::system(command.c_str()) != 0) {
-    std::cerr << "08_torso: gnuplot failed on " << folder << "/" << name << ".gp\n";
+    std::cerr << "08_torso: gnuplot failed on " << GJKX_TORSO_RUNNING_TIME_GP << " with " << set.str() << "\n";
     return false;
   }
   chapter::wrote(out + "/" + name + ".png");

@@ -6,6 +6,8 @@
 // (`08_torso --stats`); docs/08_torso.md states the definitions.
 #pragma once
 
+#include "../formatting.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -100,17 +102,14 @@ inline Run readRun(const std::string& folder) {
   if (!in) throw std::runtime_error(path + ": cannot read (no run of gjkx_simulate there?)");
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  const std::vector<std::string> names = chapter::csvFields(line);
   for (const std::string& name : requiredColumns())
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::runtime_error(path + ": no column '" + name + "' (a frames.csv of an older gjkx_simulate? run it again)");
   for (int row = 2; std::getline(in, line); ++row) {
     if (line.empty()) continue;
-    std::stringstream fields(line);
     std::size_t k = 0;
-    for (std::string cell; std::getline(fields, cell, ','); ++k) {
+    for (const std::string& cell : chapter::csvFields(line)) {
       if (k >= names.size()) throw std::runtime_error(path + ":" + std::to_string(row) + ": more cells than columns");
       try {
         std::size_t used = 0;
@@ -121,6 +120,7 @@ inline Run readRun(const std::string& folder) {
         throw std::runtime_error(path + ":" + std::to_string(row) + ": column '" + names[k] + "': not a number: '" +
                                  cell + "'");
       }
+      ++k;
     }
     if (k != names.size())
       throw std::runtime_error(path + ":" + std::to_string(row) + ": " + std::to_string(k) + " cells for " +
@@ -228,25 +228,12 @@ inline RunStats statsOf(const Run& run) {
   return s;
 }
 
-namespace detail {
-inline std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-inline std::string format(const char* pattern, double a, double b) {
-  char text[96];
-  std::snprintf(text, sizeof text, pattern, a, b);
-  return text;
-}
-}  // namespace detail
-
 /// A markdown table of the runs' statistics, one column per run (headed by its label), and
 /// the paper's figures in the last column ("not reported" where §6 gives none). Under the
 /// table: each run's folder and settings (summary.txt's RUN line) and `command`, the
 /// command line that made the table.
 inline std::string statsTable(const std::vector<std::pair<std::string, Run>>& runs, const std::string& command) {
-  using detail::format;
+  using chapter::format;
   using P = PaperFigures;
   std::vector<RunStats> stats;
   for (const auto& run : runs) stats.push_back(statsOf(run.second));
