@@ -15,6 +15,7 @@
 // disagree with one another (closed forms, brute force, 2D forms). Takes a few seconds.
 // Regenerate the kept table with `build/chapters/09_study/extreme_cases --out figures/study`.
 #include "../command_line.hpp"
+#include "../formatting.hpp"
 
 #include <gjkx/study/extreme_cases.hpp>
 #include <gjkx/study/peers.hpp>
@@ -154,27 +155,8 @@ std::string expectText(const ToiCase& c) {
   return "?";
 }
 
-std::string num(double x, const char* format = "%.6g") {
-  if (std::isnan(x)) return "-";
-  char s[64];
-  std::snprintf(s, sizeof s, format, x);
-  return s;
-}
-
-std::string markdownTable(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
-  std::ostringstream out;
-  out << "|";
-  for (const auto& h : header) out << " " << h << " |";
-  out << "\n|";
-  for (std::size_t k = 0; k < header.size(); ++k) out << " --- |";
-  out << "\n";
-  for (const auto& row : rows) {
-    out << "|";
-    for (const auto& cell : row) out << " " << cell << " |";
-    out << "\n";
-  }
-  return out.str();
-}
+using chapter::formatOrDash;
+using chapter::markdownTable;
 
 // A plain-text table for the terminal: columns padded to their widest cell.
 std::string textTable(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
@@ -311,28 +293,25 @@ int main(int argc, char** argv) {
   {
     std::vector<std::vector<std::string>> rows;
     for (const ToiCase& c : cases)
-      rows.push_back({c.name, c.setup, expectText(c), c.query.refHit ? num(c.query.tRef, "%.9f") : "-", num(c.closedForm, "%.9f"),
-                      c.hasPlanarForm ? (c.planar.refHit ? num(c.planar.tRef, "%.9f") : "no hit") : "-",
-                      c.expect == Expect::NoHit ? "-" : num(c.delta, "%.0e") + " (" + c.deltaWhy + ")", num(c.lipschitz, "%.3g")});
+      rows.push_back({c.name, c.setup, expectText(c), c.query.refHit ? formatOrDash("%.9f", c.query.tRef) : "-", formatOrDash("%.9f", c.closedForm),
+                      c.hasPlanarForm ? (c.planar.refHit ? formatOrDash("%.9f", c.planar.tRef) : "no hit") : "-",
+                      c.expect == Expect::NoHit ? "-" : formatOrDash("%.0e", c.delta) + " (" + c.deltaWhy + ")", formatOrDash("%.3g", c.lipschitz)});
     md << markdownTable({"case", "setup", "expect", "t_ref, brute force", "t_ref, closed form", "t_ref, 2D form", "delta", "L"}, rows)
        << "\n";
   }
   {
     std::vector<std::vector<std::string>> rows;
     for (const StaticCase& c : statics)
-      rows.push_back({c.name, c.setup, num(c.reference, "%.9g"), num(c.closedForm, "%.9g"), num(c.tau, "%.1e")});
+      rows.push_back({c.name, c.setup, formatOrDash("%.9g", c.reference), formatOrDash("%.9g", c.closedForm), formatOrDash("%.1e", c.tau)});
     md << markdownTable({"static case", "setup", "d_ref, brute force", "d_ref, closed form", "tau"}, rows);
   }
   title(false, "What the methods said where they were not right (and both float runs of ours at 10^5, in P's frame and in the world's)", "");
   md << markdownTable({"case", "method", "cell", "what it said"}, detailRows);
 
   // The notes: provenance, rules, settings.
-  char date[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  md << "\n<br>Written by `extreme_cases --out " << options.out << "` on " << date << "; peers: " << peersFound
+  md << "\n<br>Written by `extreme_cases --out " << options.out << "` on " << chapter::utcNow() << "; peers: " << peersFound
      << (peersMissing.empty() ? "" : "; left out (not installed): " + peersMissing) << ". "
-     << "Each cell ran in its own `fork()`ed process under a watchdog of " << num(options.watchdog, "%.0f")
+     << "Each cell ran in its own `fork()`ed process under a watchdog of " << formatOrDash("%.0f", options.watchdog)
      << " s and is judged against an independent reference: the long-double brute force of `workloads.hpp` (feature pairs, a "
         "Lipschitz bound on d(t), bisection), checked against a closed form where the geometry gives one and against the 2D "
         "form's own reference.\n"
@@ -347,9 +326,9 @@ int main(int argc, char** argv) {
         "status (ours: IterationCap; CA: 10000 steps; Box2D: e_failed; FCL and Bullet have none). *Hang*: killed by the "
         "watchdog. *Crash*: died of a signal, or threw on these valid inputs. *n/a*: Box2D on a case without a 2D form.\n"
      << "<br>Settings: ours (the paper's extrusion test and Brent, `gjkx::timeOfImpact`) and the certified variant at "
-        "collision tolerance " << num(kTolerance, "%.0e") << " in double and in float (time tolerance the smaller of "
+        "collision tolerance " << formatOrDash("%.0e", kTolerance) << " in double and in float (time tolerance the smaller of "
         "sqrt(eps) and the tolerance), each query run in the frame of P; *ours float, world frame*: the same in world "
-        "coordinates (`ToiSettings::inFrameOfP = false`), to show what the frame buys; CA (conservative advancement on our GJK) at " << num(kTolerance, "%.0e")
+        "coordinates (`ToiSettings::inFrameOfP = false`), to show what the frame buys; CA (conservative advancement on our GJK) at " << formatOrDash("%.0e", kTolerance)
      << "; static sampling at 32 times and the swept test at the library's default tolerance sqrt(eps), in double; FCL "
         "`continuousCollide` naive at toc_err 1e-3 (1000 static tests) and conservative advancement (libccd's GJK and FCL's "
         "own, toc_err 1e-4); Bullet `btContinuousConvexCollision` (single precision); Box2D `b2TimeOfImpact` on the 2D form "
@@ -363,9 +342,9 @@ int main(int argc, char** argv) {
     for (const auto* m : {&c.query.motionP, &c.query.motionQ})
       if (m->w.norm() > M_PI) {
         const Eigen::Matrix3d turn = m->poseAt(1).first * m->R0.transpose();
-        md << "<br>Case " << c.name << ": " << (m == &c.query.motionP ? "P" : "Q") << " turns " << num(m->w.norm(), "%.3g")
+        md << "<br>Case " << c.name << ": " << (m == &c.query.motionP ? "P" : "Q") << " turns " << formatOrDash("%.3g", m->w.norm())
            << " rad over the interval; FCL and Bullet, given its start and end poses, see a turn of "
-           << num(Eigen::AngleAxisd(turn).angle(), "%.3g") << " rad (the shortest rotation between them).\n";
+           << formatOrDash("%.3g", Eigen::AngleAxisd(turn).angle()) << " rad (the shortest rotation between them).\n";
       }
   for (const auto& p : problems) md << "<br>**The references disagree:** " << p << "\n";
 
