@@ -108,7 +108,9 @@ inline double tunnellingThreshold(double distanceAtStart, double tolerance) {
 }
 
 /// True when d(t) falls to `threshold` or below somewhere in [t0, t1], given that d changes at
-/// most `lipschitz` per unit time (reference::firstContact, 8 samples and bisection).
+/// most `lipschitz` per unit time (reference::firstContact, 8 samples and bisection down to a
+/// time in which d changes by a twentieth of |threshold|, so a fast pass is proven clean
+/// rather than reported for want of resolution).
 bool firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
                            double t1);
 
