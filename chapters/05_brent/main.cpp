@@ -59,11 +59,7 @@ Color kindColor(BrentStepKind kind) {  // in the order of BrentStepKind
   return colors[static_cast<int>(kind)];
 }
 
-std::string format(const char* spec, double x) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, spec, x);
-  return buffer;
-}
+using chapter::format;
 
 std::vector<V> unitDirections(int count) {
   std::vector<V> dirs;
