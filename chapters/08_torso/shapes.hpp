@@ -53,6 +53,9 @@ class Random {
   std::mt19937 engine_;
 };
 
+/// The value a fraction `t` of the way from `a` to `b`.
+inline double lerp(double a, double b, double t) { return a + (b - a) * t; }
+
 /// Checks that every vertex of `mesh` is finite and every edge is used once in each
 /// direction (closed and consistently oriented); throws std::logic_error naming the mesh otherwise.
 inline void requireClosedOriented(const gjkx::TriangleMesh& mesh) {
