@@ -1,6 +1,6 @@
 // gjkx_bullet_scene: runs a scene file (gjkx/timewarp/scene.hpp) in Bullet, the rigid-body
 // library most people would reach for, and measures the run with the same independent
-// checks as gjkx_simulate (gjkx/timewarp/checks.hpp), so that the two can be compared.
+// checks as gjkx_simulate --checks (gjkx/verify/frame_verifier.hpp), so that the two can be compared.
 //
 //   gjkx_bullet_scene SCENE.json [--out DIR] [--substeps N] [--no-ccd] [--quiet]
 //
@@ -17,17 +17,17 @@
 // command line exits 2.
 //
 // The same bodies. The scene is read by the library's parser and its bodies built by
-// gjkx::World (never run here): our mass, inertia and centre of mass from the same shape
+// gjkx::buildBodies, as our world builds them: our mass, inertia and centre of mass from the same shape
 // and density, the same convex pieces of a mesh (gjkx::decompose, cached on disk). Bullet
 // is handed those, so both simulators move the same bodies and the checks measure both
 // on the same shapes.
 //
-// The same checks. After every frame, as World::runChecks does for our run: the signed
-// distance of every pair whose bounds meet, at the frame's end, by the reference
-// (referenceSignedDistance; its negative is the penetration), and, for a pair Bullet had
-// no contact point for during the frame, whether the pair interpenetrated (came closer
-// than minus twice the collision tolerance) at any time of the frame
-// (firstInterpenetration). Between frames our world moves a body on a free-flight path: a
+// The same checks. After every frame, the same observer our world attaches
+// (gjkx::FrameVerifier): the signed distance of every pair whose bounds meet, at the
+// frame's end, by the reference (its negative is the penetration), and, for a pair Bullet
+// had no contact point for during the frame, whether the pair interpenetrated (came closer
+// than minus twice the collision tolerance) at any time of the frame. Each finding is
+// named on standard error and in DIR/checks.csv. Between frames our world moves a body on a free-flight path: a
 // parabola under gravity for its centre of mass and a rotation turning at a constant rate
 // along the shortest arc (gjkx::FreeFlightPath). Bullet gives only the poses at the
 // frame's ends, and a free-flight path is fitted to them: the same rotation, and the one
@@ -38,10 +38,9 @@
 #include "../command_line.hpp"
 
 #include <gjkx/mesh/triangle_mesh.hpp>
-#include <gjkx/timewarp/broad_phase.hpp>
-#include <gjkx/timewarp/checks.hpp>
+#include <gjkx/timewarp/body.hpp>
 #include <gjkx/timewarp/scene.hpp>
-#include <gjkx/timewarp/world.hpp>
+#include <gjkx/verify/frame_verifier.hpp>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
@@ -308,33 +307,25 @@ gjkx::Motion<double> fittedPath(const gjkx::Pose<double>& from, const gjkx::Pose
   return gjkx::Motion<double>::freeFlight(from, velocity, gravity, to.rotation, t0, t1);
 }
 
-/// How fast the distance of a body to anything can change along a fitted path: its centre
-/// moves at most max(|v0|, |v0 + g dt|) (a parabola's speed is largest at an end), and a
-/// point within `radius` of the centre adds the slerp's constant turning rate times radius.
-double speedBound(const gjkx::Motion<double>& path, double radius) {
-  const auto& flight = std::get<gjkx::FreeFlightPath<double>>(path.variant());
-  const double dt = flight.t1 - flight.t0;
-  const double linear = std::max(flight.velocity.norm(), (flight.velocity + flight.acceleration * dt).norm());
-  return linear + path.bound().angularSpeed * radius;
-}
-
-/// The box a body sweeps along its path over [t0, t1] (a parabola's box: its ends and, per
-/// axis, its turning point), grown by its bounding radius.
-gjkx::Bounds sweptBounds(const gjkx::Motion<double>& path, double radius, double t0, double t1) {
-  gjkx::Bounds box;
-  box.add(path.pose(t0).translation);
-  box.add(path.pose(t1).translation);
-  if (const auto* f = std::get_if<gjkx::FreeFlightPath<double>>(&path.variant())) {
-    for (int k = 0; k < 3; ++k) {
-      if (f->acceleration[k] == 0) continue;
-      const double tau = -f->velocity[k] / f->acceleration[k];
-      if (tau > 0 && tau < t1 - t0) box.add(path.pose(t0 + tau).translation);
-    }
+/// A body's path over the frame as the checks take it: the fitted free-flight path, its
+/// centre's velocity at both ends (a parabola's: v0 and v0 + g dt) and the slerp's constant
+/// turning rate as its spin at both ends.
+gjkx::PathPiece checkedPath(const gjkx::Motion<double>& motion, const gjkx::Pose<double>& from,
+                            const gjkx::Pose<double>& to, double t0, double t1) {
+  gjkx::FreeFlight path;
+  path.t0 = t0;
+  path.t1 = t1;
+  path.motion = motion;
+  path.start.worldFromBody = from;
+  path.end.worldFromBody = to;
+  if (const auto* f = std::get_if<gjkx::FreeFlightPath<double>>(&motion.variant())) {
+    path.start.velocity = f->velocity;
+    path.end.velocity = f->velocity + f->acceleration * (t1 - t0);
+    const double spin = motion.bound().angularSpeed;
+    path.start.angularVelocity = path.end.angularVelocity = Eigen::Vector3d(spin, 0, 0);
   }
-  box.inflate(radius);
-  return box;
+  return {path, t1};
 }
-
 
 }  // namespace
 
@@ -355,21 +346,20 @@ int main(int argc, char** argv) {
   chapter::parseOrExit(app, argc, argv);
 
   gjkx::Scene scene;
-  std::unique_ptr<gjkx::World> ours;  // builds the bodies (never run)
+  std::vector<gjkx::WorldBody> bodies;
+  std::unique_ptr<gjkx::FrameVerifier> verifier;
   try {
     scene = gjkx::loadScene(scenePath);
-    gjkx::WorldSettings settings;
-    settings.checks = false;
-    ours = std::make_unique<gjkx::World>(scene, settings);
+    bodies = gjkx::buildBodies(scene, gjkx::frameCount(scene) / scene.frameRate);
+    // The checks' view of the bodies, prepared once (the plant's tree of 8,640 pieces); 5%
+    // spare on the speed bound, for Bullet's float poses.
+    verifier = std::make_unique<gjkx::FrameVerifier>(gjkx::verifiedBodies(bodies), scene.collisionTolerance,
+                                                     scene.gravity, 1.05);
   } catch (const std::exception& e) {
     std::cerr << "gjkx_bullet_scene: " << e.what() << "\n";
     return 1;
   }
-  const std::vector<gjkx::WorldBody>& bodies = ours->bodies();
-  // The checks' view of the bodies, prepared once (the plant's tree of 8,640 pieces).
-  std::vector<gjkx::ReferenceBody> references;
-  for (const gjkx::WorldBody& body : bodies) references.emplace_back(body);
-  const int frames = ours->frameCount();
+  const int frames = gjkx::frameCount(scene);
   const double frameDt = 1.0 / scene.frameRate;
   // Bullet's step: its manual's default internal step is 1/60 s, which its users are told to
   // shorten for accuracy; PyBullet, Bullet's own front end, steps 1/240 s by default. So:
@@ -432,13 +422,14 @@ int main(int argc, char** argv) {
   }
 
   std::filesystem::create_directories(out);
-  std::ofstream framesCsv(out + "/frames.csv"), bodiesCsv(out + "/bodies.csv");
-  if (!framesCsv || !bodiesCsv) {
+  std::ofstream framesCsv(out + "/frames.csv"), bodiesCsv(out + "/bodies.csv"), checksCsv(out + "/checks.csv");
+  if (!framesCsv || !bodiesCsv || !checksCsv) {
     std::cerr << "gjkx_bullet_scene: cannot write to " << out << "\n";
     return 1;
   }
   framesCsv << "frame,time,wall_s,max_penetration,kinetic_energy,contact_pairs,tunnelled,checks_s\n";
   bodiesCsv << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
+  checksCsv << "frame,time,kind,body,other,depth\n";
 
   auto stateOf = [&](std::size_t b) {
     gjkx::BodyState s;
@@ -472,42 +463,29 @@ int main(int argc, char** argv) {
 
       // The checks (not timed as Bullet's work).
       const auto checksStart = Clock::now();
-      std::vector<gjkx::Motion<double>> paths;
-      std::vector<gjkx::Bounds> boxes(bodies.size());
-      std::vector<double> speed(bodies.size(), 0.0);
+      std::vector<std::vector<gjkx::PathPiece>> paths(bodies.size());
       for (std::size_t b = 0; b < bodies.size(); ++b) {
         const gjkx::Pose<double> after = ourPose(*bullet[b].rigid, bullet[b]);
-        if (bodies[b].rigid.isStatic()) {
-          paths.push_back(gjkx::Motion<double>::fixed(after));
-        } else {
-          paths.push_back(fittedPath(before[b], after, scene.gravity, T0, T1));
-          speed[b] = speedBound(paths.back(), bodies[b].radius);
-        }
-        boxes[b] = sweptBounds(paths.back(), bodies[b].radius, T0, T1);
-        boxes[b].inflate(scene.collisionTolerance);
+        const gjkx::Motion<double> motion = bodies[b].rigid.isStatic()
+                                                ? gjkx::Motion<double>::fixed(after)
+                                                : fittedPath(before[b], after, scene.gravity, T0, T1);
+        paths[b].push_back(checkedPath(motion, before[b], after, T0, T1));
         before[b] = after;
       }
-      double penetration = 0;
-      int tunnelledNow = 0;
-      const auto pairs = gjkx::overlappingPairs(
-          boxes, [&](int i, int j) { return bodies[i].rigid.isStatic() && bodies[j].rigid.isStatic(); });
-      for (const auto& [i, j] : pairs) {
-        const double d = gjkx::referenceSignedDistance(references[i], paths[i].pose(T1), references[j], paths[j].pose(T1));
-        penetration = std::max(penetration, -d);
-        if (contacts.pairs.count({std::min(i, j), std::max(i, j)})) continue;
-        if (touchesAtEnd(world, *bullet[i].rigid, *bullet[j].rigid)) continue;
-        const int a = i, b = j;
-        const auto distance = [&](double t) {
-          return gjkx::referenceSignedDistance(references[a], paths[a].pose(t), references[b], paths[b].pose(t));
-        };
-        // 5% spare on the speed bound, for Bullet's float poses.
-        const double threshold = gjkx::tunnellingThreshold(distance(T0), scene.collisionTolerance);
-        if (gjkx::firstInterpenetration(distance, 1.05 * (speed[a] + speed[b]), threshold, T0, T1)) {
-          ++tunnelledNow;
-          std::cerr << "gjkx_bullet_scene: frame " << frame << ": '" << bodies[a].name << "' and '" << bodies[b].name
+      const gjkx::FrameVerdict verdict = verifier->check(frame, T0, T1, paths, [&](int i, int j) {
+        return contacts.pairs.count({i, j}) > 0 || touchesAtEnd(world, *bullet[i].rigid, *bullet[j].rigid);
+      });
+      for (const gjkx::Finding& f : verdict.findings) {
+        const std::string& a = bodies[std::size_t(f.i)].name;
+        const std::string& b = bodies[std::size_t(f.j)].name;
+        checksCsv << f.frame << ',' << f.time << ',' << gjkx::findingName(f.kind) << ',' << a << ',' << b << ','
+                  << f.depth << '\n';
+        if (f.kind == gjkx::Finding::Kind::Tunnelling)
+          std::cerr << "gjkx_bullet_scene: frame " << f.frame << ", t = " << f.time << ": '" << a << "' and '" << b
                     << "' interpenetrated with no contact\n";
-        }
       }
+      const double penetration = verdict.maxPenetration;
+      const int tunnelledNow = int(verdict.tunnelled);
       const double checks = std::chrono::duration<double>(Clock::now() - checksStart).count();
       maxPenetration = std::max(maxPenetration, penetration);
       tunnelled += tunnelledNow;

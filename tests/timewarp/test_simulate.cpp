@@ -56,15 +56,20 @@ std::map<std::string, std::string> summary(const std::string& output) {
 
 TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[simulate]") {
   const fs::path out = freshFolder("cradle");
-  const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/cradle.json\" --out \"" + out.string() + "\" --quiet");
+  const Result r =
+      simulate("\"" + std::string(GJKX_SCENES) + "/cradle.json\" --out \"" + out.string() + "\" --quiet --checks");
   INFO(r.output);
   REQUIRE(r.status == 0);
+  REQUIRE(fs::exists(out / "checks.csv"));
+  CHECK(firstLine(out / "checks.csv") == "frame,time,kind,body,other,depth");
+  CHECK(lineCount(out / "checks.csv") == 1);  // nothing found: the header alone
+  CHECK(r.output.find("(not checked)") == std::string::npos);
   REQUIRE(fs::exists(out / "frames.csv"));
   REQUIRE(fs::exists(out / "bodies.csv"));
   CHECK(firstLine(out / "frames.csv") ==
         "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,max_penetration,"
         "events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,tunnelled,integration_s,"
-        "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught");
+        "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught,spin_restarts,event_caps");
   CHECK(firstLine(out / "bodies.csv") == "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy");
   const auto keys = summary(r.output);
   for (const char* key : {"frames", "sim_s", "wall_s", "collisions", "rollbacks", "brent_mean", "brent_max",
@@ -84,13 +89,27 @@ TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[s
   fs::remove_all(out);
 }
 
+TEST_CASE("gjkx_simulate without --checks says so: -1 and (not checked), no checks.csv", "[simulate]") {
+  const fs::path out = freshFolder("unchecked");
+  const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/ball_drop.json\" --out \"" + out.string() + "\" --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const auto keys = summary(r.output);
+  REQUIRE(keys.count("tunnelled") == 1);
+  CHECK(keys.at("tunnelled") == "-1");
+  CHECK(keys.at("max_penetration") == "-1");
+  CHECK(r.output.find("(not checked)") != std::string::npos);
+  CHECK(!fs::exists(out / "checks.csv"));
+  fs::remove_all(out);
+}
+
 TEST_CASE("gjkx_simulate runs the other example scenes without tunnelling", "[simulate]") {
   // The tori: four closed meshes dropped on a static one, whose prisms once made a node
   // hull Qhull could not build right (convex_hull.cpp, near duplicates).
   for (const std::string& scene : {std::string(GJKX_SCENES) + "/ball_drop.json", std::string(GJKX_SCENES) + "/dominoes.json",
                                   std::string(GJKX_TORSO_SCENES) + "/tori.json"}) {
     const fs::path out = freshFolder(fs::path(scene).filename().string());
-    const Result r = simulate("\"" + scene + "\" --out \"" + out.string() + "\" --quiet");
+    const Result r = simulate("\"" + scene + "\" --out \"" + out.string() + "\" --quiet --checks");
     INFO(scene << ": " << r.output);
     CHECK(r.status == 0);
     const auto keys = summary(r.output);

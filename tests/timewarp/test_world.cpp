@@ -34,6 +34,14 @@ Run runAll(World& world) {
   return run;
 }
 
+/// The settings of these tests: the independent checks on (off by default), so that every
+/// run is measured for penetration and tunnelling.
+WorldSettings checked() {
+  WorldSettings settings;
+  settings.checks = true;
+  return settings;
+}
+
 std::string orderingKey(Ordering o) { return std::string(R"("ordering": ")") + orderingName(o) + R"(",)"; }
 
 }  // namespace
@@ -43,7 +51,7 @@ TEST_CASE("world: a ball dropped on the floor rebounds to e^2 of its height each
   const Scene scene = parseScene(R"({ "duration": 2.2, "restitution": 0.7, "friction": 0, "scalar": "double",
       "bodies": [ { "name": "floor", "shape": {"box": [2, 2, 0.5]}, "position": [0, 0, -0.5], "static": true },
                   { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1.1] } ] })");
-  World world(scene);
+  World world(scene, checked());
   // Between bounces z + vz^2 / (2g) is the apex height of the ball's bottom (ballistic flight).
   std::vector<double> apexes;
   double last = h0;
@@ -65,7 +73,7 @@ TEST_CASE("world: a box sliding on the floor stops after v^2 / (2 mu g)") {
   const Scene scene = parseScene(R"({ "duration": 1.5, "friction": 0.4, "scalar": "double",
       "bodies": [ { "name": "floor", "shape": {"box": [4, 4, 0.5]}, "position": [0, 0, -0.5], "static": true },
                   { "name": "box", "shape": {"box": [0.2, 0.2, 0.05]}, "position": [-1, 0, 0.0502], "velocity": [2, 0, 0] } ] })");
-  World world(scene);
+  World world(scene, checked());
   runAll(world);
   const double travelled = world.positionOf(1).x() + 1;
   CHECK(travelled == Approx(v * v / (2 * mu * g)).epsilon(0.1));
@@ -86,7 +94,7 @@ TEST_CASE("world: the impulse tolerances are the settings', and a bad one is ref
   long steps[2] = {0, 0};
   double travelled[2] = {0, 0};
   for (int k = 0; k < 2; ++k) {
-    World world(scene, k == 0 ? WorldSettings{} : tight);
+    World world(scene, k == 0 ? checked() : tight);
     long collisions = 0;
     while (!world.done()) {
       const FrameReport r = world.step();
@@ -129,7 +137,7 @@ TEST_CASE("world: a body rattling in the tolerance band settles, one in the air 
                   { "name": "rod", "shape": {"box": [0.15, 0.01, 0.01]}, "position": [0, 0, 0.04],
                     "orientation": [0.9990482, 0, 0.0436194, 0] },
                   { "name": "tossed", "shape": {"box": [0.05, 0.05, 0.05]}, "position": [1, 1, 1.5], "velocity": [0, 0, 0.01] } ] })");
-  World world(scene);
+  World world(scene, checked());
   long settled = 0;
   bool tossedSleptInAir = false;
   double deepest = 0;
@@ -156,7 +164,7 @@ TEST_CASE("world: a collision between free bodies conserves linear and angular m
                       "angular_velocity": [0, 0.5, 1] },
                     { "name": "b", "shape": {"polytope": [[0,0,0],[0.3,0,0],[0,0.4,0],[0,0,0.3],[0.3,0.3,0.3]]},
                       "position": [0.5, -0.1, -0.1], "velocity": [-1, 0, 0], "density": 700 } ] })");
-    World world(scene);
+    World world(scene, checked());
     auto momenta = [&]() {
       Eigen::Vector3d P = Eigen::Vector3d::Zero(), L = Eigen::Vector3d::Zero();
       double E = 0;
@@ -193,7 +201,7 @@ TEST_CASE("world: kinetic energy never rises in collisions (zero gravity, a crow
   }
   const Scene scene = parseScene(R"({ "duration": 1.5, "gravity": [0, 0, 0], "bodies": [)" + bodies +
                                  R"(, { "name": "wall", "shape": {"box": [2, 2, 0.1]}, "position": [0, 0, 0.6], "static": true } ] })");
-  World world(scene);
+  World world(scene, checked());
   auto energy = [&]() {
     double E = 0;
     for (std::size_t b = 0; b < world.bodies().size(); ++b) E += world.bodies()[b].rigid.kineticEnergy(world.stateOf(int(b)));
@@ -215,7 +223,7 @@ TEST_CASE("world: a stack of blocks in free fall reports no collision (the paper
       { "name": "a", "shape": {"box": [0.2, 0.2, 0.1]}, "position": [0, 0, 0] },
       { "name": "b", "shape": {"box": [0.2, 0.2, 0.1]}, "position": [0, 0, 0.201] },
       { "name": "c", "shape": {"box": [0.2, 0.2, 0.1]}, "position": [0, 0, 0.402] } ] })");
-  World world(scene);
+  World world(scene, checked());
   const Run run = runAll(world);
   CHECK(run.checks > 0);  // the broad phase hands the pairs to the solver every frame...
   CHECK(run.collisions == 0);  // ... which proves them apart over each whole frame
@@ -230,7 +238,7 @@ TEST_CASE("world: Newton's cradle passes the momentum down the row, in order") {
   for (Ordering ordering : {Ordering::Timewarp, Ordering::ToiHeap}) {
     const Scene scene = parseScene(R"({ "duration": 1.5, "gravity": [0, 0, 0], "restitution": 1, "friction": 0, )" +
                                    orderingKey(ordering) + R"( "bodies": [)" + bodies + "] }");
-    World world(scene);
+    World world(scene, checked());
     runAll(world);
     INFO(orderingName(ordering));
     const auto& log = world.collisionLog();
@@ -256,7 +264,7 @@ TEST_CASE("world: a blow passes through a row of touching balls at one instant, 
         "position": [)" + std::to_string(k == 0 ? -0.3 : 0.20005 * k) + R"(, 0, 0], "velocity": [)" + (k == 0 ? "1" : "0") + R"(, 0, 0] })";
   const Scene scene = parseScene(R"({ "duration": 0.5, "gravity": [0, 0, 0], "restitution": 1, "friction": 0,
       "scalar": "double", "bodies": [)" + bodies + "] }");
-  World world(scene);
+  World world(scene, checked());
   const Run run = runAll(world);
   const auto& log = world.collisionLog();
   REQUIRE(log.size() == 4);
@@ -278,7 +286,7 @@ TEST_CASE("world: a thin plate thrown at a thin wall does not tunnel, fixed step
   };
   // 48 m/s at 24 frames per second: 2 m per frame, the wall is 1 cm thick.
   for (const char* ordering : {"timewarp", "toi_heap"}) {
-    World world(scene(ordering));
+    World world(scene(ordering), checked());
     const Run run = runAll(world);
     INFO(ordering);
     CHECK(run.collisions >= 1);
@@ -286,7 +294,7 @@ TEST_CASE("world: a thin plate thrown at a thin wall does not tunnel, fixed step
     CHECK(world.positionOf(1).x() < 0);  // still on its side of the wall
     CHECK(run.maxPenetration < 1e-3);
   }
-  World discrete(scene("fixed_step"));
+  World discrete(scene("fixed_step"), checked());
   const Run run = runAll(discrete);
   CHECK(run.collisions == 0);
   CHECK(discrete.positionOf(1).x() > 0);  // through the wall
@@ -301,12 +309,12 @@ TEST_CASE("world: two thin plates falling through each other: the check sees it,
         "bodies": [ { "name": "left", "shape": {"box": [0.005, 0.3, 0.3]}, "position": [-0.5, 0, 0], "velocity": [24, 0, 0] },
                     { "name": "right", "shape": {"box": [0.005, 0.3, 0.3]}, "position": [0.5, 0, 0], "velocity": [-24, 0, 0] } ] })");
   };
-  World discrete(scene("fixed_step"));
+  World discrete(scene("fixed_step"), checked());
   const Run passed = runAll(discrete);
   CHECK(passed.collisions == 0);
   CHECK(discrete.positionOf(0).x() > discrete.positionOf(1).x());  // through each other
   CHECK(passed.tunnelled == 1);                                    // and the independent check says so
-  World world(scene("timewarp"));
+  World world(scene("timewarp"), checked());
   const Run run = runAll(world);
   CHECK(run.collisions >= 1);
   CHECK(run.tunnelled == 0);
@@ -320,7 +328,7 @@ TEST_CASE("world: Timewarp, the time-of-impact heap and small fixed steps agree 
         "bodies": [ { "name": "a", "shape": {"sphere": 0.2}, "position": [-1, 0.05, 0], "velocity": [3, 0, 0] },
                     { "name": "b", "shape": {"sphere": 0.25}, "position": [1, -0.05, 0], "velocity": [-2, 0.2, 0] },
                     { "name": "c", "shape": {"sphere": 0.2}, "position": [0, 1.5, 0], "velocity": [0, -1, 0] } ] })");
-    World world(scene);
+    World world(scene, checked());
     runAll(world);
     std::vector<Eigen::Vector3d> v;
     for (int b = 0; b < 3; ++b) v.push_back(world.stateOf(b).velocity);
@@ -357,7 +365,7 @@ TEST_CASE("world: a fast spinner is flown in intervals of a quarter turn, one to
   // 200,000 rad/s even those hold too little, and the world says so.
   const Scene scene = parseScene(R"({ "duration": 0.5, "gravity": [0, 0, 0], "bodies": [
       { "name": "spinner", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 80] } ] })");
-  World world(scene);
+  World world(scene, checked());
   while (!world.done()) world.step();
   const BodyState s = world.stateOf(0);
   const Eigen::Matrix3d expected = Eigen::AngleAxisd(40.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -392,7 +400,7 @@ TEST_CASE("world: a ball thrown at 10^6 m/s 2 mm over a box passes clean, neithe
                       { "name": "ball", "shape": {"sphere": 0.3}, "position": [-2, 0, )" +
                                      std::to_string(1.3 + above) + R"(], "velocity": [)" +
                                      (above > 0 ? "1e6" : "1e3") + R"(, 0, 0] } ] })");
-      World world(scene);
+      World world(scene, checked());
       const Run run = runAll(world);
       bool struck = false;
       for (const auto& [time, i, j] : world.collisionLog()) struck = struck || (i == 1 && j == 2);

@@ -151,4 +151,10 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration) {
   return bodies;
 }
 
+std::vector<VerifiedBody> verifiedBodies(const std::vector<WorldBody>& bodies) {
+  std::vector<VerifiedBody> out;
+  for (const WorldBody& body : bodies) out.push_back({body.name, body.pieces, body.shape, body.radius, body.rigid.isStatic()});
+  return out;
+}
+
 }  // namespace gjkx

@@ -223,4 +223,8 @@ Scene loadScene(const std::string& path) {
   return scene;
 }
 
+int frameCount(const Scene& scene) {
+  return std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9)));
+}
+
 }  // namespace gjkx

@@ -2,7 +2,6 @@
 #include <gjkx/timewarp/world.hpp>
 
 #include <gjkx/timewarp/broad_phase.hpp>
-#include <gjkx/timewarp/checks.hpp>
 #include <gjkx/timewarp/fixed_step.hpp>
 #include <gjkx/timewarp/sleep.hpp>
 #include <gjkx/timewarp/step.hpp>
@@ -24,8 +23,6 @@ namespace {
 /// neither sinks into the other body nor collides endlessly. Without gravity: none.
 double microcollisionSpeed(double gravity, double tolerance) { return std::sqrt(2 * gravity * tolerance); }
 
-int framesOf(const Scene& scene) { return std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9))); }
-
 /// The settings, checked by name before anything is built (a decomposition can take seconds).
 const WorldSettings& validated(const WorldSettings& settings) {
   settings.validate("settings");
@@ -45,13 +42,13 @@ World::World(const Scene& scene, const WorldSettings& settings)
     : scene_(scene),
       settings_(validated(settings)),
       impulse_(settings.impulse),
-      bodies_(buildBodies(scene, double(framesOf(scene)) / scene.frameRate)),
+      bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate)),
       narrow_(narrowPhaseOf(scene.scalar, bodies_)),
-      frameCount_(framesOf(scene)) {
+      frameCount_(gjkx::frameCount(scene)) {
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
-  // The checks' own view of every body: piece clouds and a sphere tree, made once rather
-  // than on each of the many distances a frame's checks take.
-  for (const WorldBody& body : bodies_) referenceBodies_.push_back(std::make_shared<const ReferenceBody>(body));
+  // The independent checks' own view of every body (gjkx/verify), made once: they measure
+  // the start below, and each frame's end when settings.checks is on.
+  verifier_ = std::make_unique<FrameVerifier>(verifiedBodies(bodies_), scene.collisionTolerance, scene.gravity);
   // Two bodies overlapping at the start are an error (static ones may meet: walls of a box).
   std::vector<Bounds> boxes;
   for (const WorldBody& body : bodies_) {
@@ -62,8 +59,8 @@ World::World(const Scene& scene, const WorldSettings& settings)
   }
   const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies_[i].rigid.isStatic() && bodies_[j].rigid.isStatic(); });
   for (const auto& [i, j] : pairs) {
-    const double d = referenceSignedDistance(*referenceBodies_[i], bodies_[i].path.start.worldFromBody,
-                                             *referenceBodies_[j], bodies_[j].path.start.worldFromBody);
+    const double d = verifier_->signedDistance(i, bodies_[i].path.start.worldFromBody, j,
+                                               bodies_[j].path.start.worldFromBody);
     if (d < -scene.collisionTolerance)
       throw std::invalid_argument("body '" + bodies_[i].name + "' (bodies[" + std::to_string(i) +
                                   "]) and body '" + bodies_[j].name + "' (bodies[" + std::to_string(j) +
@@ -159,9 +156,18 @@ FrameReport World::step() {
   frame.report.counters.spinRestarts = spinRestarts;
   // The frame is final: the global virtual time has passed T1, its history is discarded.
   settle(step, T1);
-  if (settings_.checks) {
+  if (settings_.checks) {  // the independent checks, attached at the frame's end
     PartTimer timer(frame.report.parts.checks);
-    checkFrame(step, referenceBodies_, T0, T1);
+    std::vector<std::vector<PathPiece>> paths = std::move(frame.paths);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      if (paths[b].empty()) paths[b].push_back({bodies_[b].path, T1});  // a static body: its one path
+    const auto& collided = frame.collidedPairs;
+    FrameVerdict verdict = verifier_->check(frame_ + 1, T0, T1, paths, [&](int i, int j) {
+      return std::find(collided.begin(), collided.end(), std::make_pair(i, j)) != collided.end();
+    });
+    frame.report.counters.maxPenetration = verdict.maxPenetration;
+    frame.report.counters.tunnelled = verdict.tunnelled;
+    frame.report.findings = std::move(verdict.findings);
     frame.report.checked = true;
   }
   ++frame_;

@@ -20,6 +20,7 @@
 #include <gjkx/motion/motion.hpp>
 #include <gjkx/support_mapping/shape.hpp>
 #include <gjkx/timewarp/scene.hpp>
+#include <gjkx/verify/frame_verifier.hpp>
 
 #include <string>
 #include <vector>
@@ -85,5 +86,8 @@ struct WorldBody {
 /// start state flown for no time (a static body: over the whole `duration`, since it is
 /// never integrated again). Throws std::invalid_argument naming the body and the field.
 std::vector<WorldBody> buildBodies(const Scene& scene, double duration);
+
+/// The bodies as the independent checks see them (gjkx/verify): names, pieces, hulls.
+std::vector<VerifiedBody> verifiedBodies(const std::vector<WorldBody>& bodies);
 
 }  // namespace gjkx

@@ -3,15 +3,11 @@
 ///
 /// The time-of-impact solver (§5) answers for one pair; a scene of n bodies has n(n-1)/2.
 /// The broad phase bounds each body over the interval by an axis-aligned box that holds
-/// every place the body occupies on its path, and keeps the pairs whose boxes overlap
-/// (sweep and prune along x: the boxes sorted by their low x, each compared with those
-/// that start before it ends). A box is conservative: it holds the body at both ends of
-/// the interval, grown by how far the path can bulge between them (the parabola of a
-/// ballistic path bulges at most |a| T^2 / 8 from its chord) and, for a turning body, the
-/// whole sphere its points can reach.
+/// every place the body occupies on its path (gjkx/dynamics/swept_bounds.hpp), and keeps
+/// the pairs whose boxes, grown by the collision tolerance, overlap (sweep and prune).
 #pragma once
 
-#include <gjkx/motion/vector.hpp>
+#include <gjkx/dynamics/swept_bounds.hpp>
 #include <gjkx/timewarp/body.hpp>
 
 #include <utility>
@@ -19,58 +15,11 @@
 
 namespace gjkx {
 
-/// An axis-aligned box in the world.
-struct Bounds {
-  /// The low corner.
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  /// The high corner.
-  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
-  /// Grows the box to hold p.
-  void add(const Eigen::Vector3d& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  /// Grows the box to hold b.
-  void add(const Bounds& b) {
-    lo = lo.cwiseMin(b.lo);
-    hi = hi.cwiseMax(b.hi);
-  }
-  /// Grows the box by r on every side.
-  void inflate(double r) {
-    lo.array() -= r;
-    hi.array() += r;
-  }
-  /// True when the two boxes share a point.
-  bool overlaps(const Bounds& b) const {
-    return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
-  }
-};
-
-/// The pairs (i, j), i < j, whose boxes overlap, by sweep and prune along x. `skip(i, j)`
-/// drops a pair (two static bodies, say). Sorted by (i, j), so the order is the same in every run.
-template <typename Skip>
-std::vector<std::pair<int, int>> overlappingPairs(const std::vector<Bounds>& boxes, Skip&& skip) {
-  std::vector<int> order(boxes.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return boxes[a].lo.x() < boxes[b].lo.x(); });
-  std::vector<std::pair<int, int>> pairs;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const Bounds& a = boxes[order[k]];
-    for (std::size_t m = k + 1; m < order.size() && boxes[order[m]].lo.x() <= a.hi.x(); ++m) {
-      int i = order[k], j = order[m];
-      if (i > j) std::swap(i, j);
-      if (a.overlaps(boxes[order[m]]) && !skip(i, j)) pairs.emplace_back(i, j);
-    }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
+/// The swept bounds of `body` along `path` over [t0, t1] (dynamics' sweptBounds of its shape).
+inline Bounds sweptBounds(const WorldBody& body, const FreeFlight& path, double t0, double t1,
+                          const Eigen::Vector3d& gravity) {
+  return sweptBounds(body.shape, body.radius, body.rigid.isStatic(), path, t0, t1, gravity);
 }
-
-/// The swept bounds of `body` along `path` over [t0, t1]: a static body's own box; a
-/// turning body's centre of mass at both ends grown by its bounding radius (every
-/// orientation may occur); a body that does not turn, its shape's box at both ends. Each
-/// grown by the ballistic bulge |g| T^2 / 8 of the path off its chord.
-Bounds sweptBounds(const WorldBody& body, const FreeFlight& path, double t0, double t1, const Eigen::Vector3d& gravity);
 
 struct StepContext;
 

@@ -7,6 +7,8 @@
 /// through that table, so a new counter is one line there (and one member here).
 #pragma once
 
+#include <gjkx/verify/frame_verifier.hpp>
+
 #include <string>
 #include <vector>
 
@@ -70,6 +72,7 @@ struct FrameReport {
   bool checked = false;       ///< the independent checks ran (else maxPenetration and tunnelled mean nothing)
   FrameCounters counters;     ///< what happened
   PartTimes parts;            ///< where the wall time went
+  std::vector<Finding> findings;  ///< what the independent checks found wrong (when checked)
 };
 
 /// One column of frames.csv: its name and how a report gives its value.

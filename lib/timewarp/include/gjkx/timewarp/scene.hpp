@@ -123,6 +123,9 @@ struct Scene {
   std::string folder = ".";
 };
 
+/// The frames of the scene's duration (at least one).
+int frameCount(const Scene& scene);
+
 /// Parses a scene from JSON text; `source` names it in messages. Throws
 /// std::invalid_argument naming the body and the field on bad input.
 Scene parseScene(const std::string& text, const std::string& source = "scene");

@@ -14,6 +14,7 @@
 
 #include <gjkx/dynamics/free_flight.hpp>
 #include <gjkx/dynamics/impulse.hpp>
+#include <gjkx/dynamics/swept_bounds.hpp>
 #include <gjkx/timewarp/body.hpp>
 #include <gjkx/timewarp/frame.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -47,12 +48,6 @@ struct Hit {
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();  ///< where the impulse acts (contact.hpp)
   /// The queue pops the earliest first; ties by the pair, so every run takes the same order.
   bool operator>(const Hit& o) const { return std::tie(time, i, j) > std::tie(o.time, o.i, o.j); }
-};
-
-/// A piece of a body's path within the frame: `path` flown from path.t0, used until `end`.
-struct PathPiece {
-  FreeFlight path;  ///< the flight
-  double end = 0;   ///< when a later flight (after a collision) replaced it
 };
 
 /// What a frame keeps while it runs (the step's scratch, made fresh for each frame).

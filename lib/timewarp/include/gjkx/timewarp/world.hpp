@@ -14,7 +14,7 @@
 ///     ├─ narrow phase: extrusion + Brent on the piece pairs (narrow_phase.hpp), contact data (contact.hpp)
 ///     └─ response: Mirtich's impulse, the instant pass, Zeno's wedge (response.hpp)
 ///   settling of slow bodies at rest (sleep.hpp)
-///   the independent checks (checks.hpp), when on
+///   the independent checks (gjkx/verify/frame_verifier.hpp), when on
 ///   ──> FrameReport (frame.hpp): counters, status, wall time by part
 /// ```
 ///
@@ -40,8 +40,6 @@
 #include <vector>
 
 namespace gjkx {
-
-class ReferenceBody;  // checks.hpp
 
 /// The world of a scene, run frame by frame.
 class World {
@@ -82,8 +80,8 @@ class World {
   ImpulseSettings impulse_;  // settings_.impulse with the scene's microcollision speed
   std::vector<WorldBody> bodies_;
   std::variant<NarrowPhase<float>, NarrowPhase<double>> narrow_;
-  /// The bodies as the independent checks measure them (checks.hpp), prepared once.
-  std::vector<std::shared_ptr<const ReferenceBody>> referenceBodies_;
+  /// The independent checks, prepared once (they also measure the start).
+  std::unique_ptr<FrameVerifier> verifier_;
   int frame_ = 0;
   int frameCount_ = 0;
   std::vector<TraceEvent> trace_;

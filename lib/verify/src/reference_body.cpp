@@ -1,5 +1,5 @@
-// The independent checks (checks.hpp).
-#include <gjkx/timewarp/checks.hpp>
+// The independent checks' distances (reference_body.hpp).
+#include <gjkx/verify/reference_body.hpp>
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -231,13 +231,13 @@ double referencePieceDistance(const Shape<double>& a, const Pose<double>& poseA,
 // ---------------------------------------------------------------------------------------
 // ReferenceBody: the pieces prepared once
 
-ReferenceBody::ReferenceBody(const WorldBody& body) : shapes_(body.pieces) {
-  if (shapes_.empty()) throw std::invalid_argument("ReferenceBody: body '" + body.name + "' has no pieces");
+ReferenceBody::ReferenceBody(const std::string& name, const std::vector<Shape<double>>& pieces) : shapes_(pieces) {
+  if (shapes_.empty()) throw std::invalid_argument("ReferenceBody: body '" + name + "' has no pieces");
   for (std::size_t k = 0; k < shapes_.size(); ++k) {
     pieces_.push_back(pieceOf(shapes_[k]));
     const Piece& piece = pieces_.back();
     if (!piece.centre.allFinite() || !std::isfinite(piece.sphereRadius))
-      throw std::invalid_argument("ReferenceBody: body '" + body.name + "': piece " + std::to_string(k) +
+      throw std::invalid_argument("ReferenceBody: body '" + name + "': piece " + std::to_string(k) +
                                   " is not finite");
     extent_ = std::max(extent_, piece.centre.norm() + piece.sphereRadius);
     order_.push_back(int(k));
@@ -380,13 +380,8 @@ double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA
   return best;
 }
 
-double referenceSignedDistance(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b,
-                               const Pose<double>& poseB) {
-  return referenceSignedDistance(ReferenceBody(a), poseA, ReferenceBody(b), poseB);
-}
-
-bool firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
-                           double t1) {
+double firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
+                             double t1) {
   // The search proves a gap free when d cannot dip to the threshold between its ends, and
   // reports a contact where a gap it cannot prove is narrower than its resolution. So the
   // resolution must be a time in which d changes by much less than the margin it proves:
@@ -402,7 +397,7 @@ bool firstInterpenetration(const std::function<double(double)>& d, double lipsch
   search.maxDepth = 60;
   const Real t = reference::firstContact([&](Real t) { return Real(d(double(t))); }, Real(lipschitz), Real(threshold),
                                          search);
-  return t >= 0;
+  return double(t);
 }
 
 }  // namespace gjkx

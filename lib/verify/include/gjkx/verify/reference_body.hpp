@@ -1,5 +1,6 @@
 /// @file
-/// @brief The independent checks of a run: penetration and tunnelling measured without the solver.
+/// @brief The independent checks' measure: the signed distance of two bodies of many convex
+/// pieces by the reference, and the first time a distance falls below a threshold.
 ///
 /// A simulation's claims are checked against the reference library (gjkx::reference, long
 /// double, brute force over features), which shares no code with GJK or the
@@ -17,13 +18,12 @@
 #pragma once
 
 #include <gjkx/motion/pose.hpp>
-#include <gjkx/timewarp/body.hpp>
-#include <gjkx/timewarp/step.hpp>
+#include <gjkx/support_mapping/shape.hpp>
 
 #include <array>
 #include <algorithm>
 #include <functional>
-#include <memory>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -45,9 +45,9 @@ double referencePieceDistance(const Shape<double>& a, const Pose<double>& poseA,
 /// leaf) through which the pieces near another body are found without visiting the rest.
 class ReferenceBody {
  public:
-  /// Prepares `body`'s pieces (WorldBody::pieces). Throws std::invalid_argument when it has
-  /// none or a piece is not finite.
-  explicit ReferenceBody(const WorldBody& body);
+  /// Prepares the convex `pieces` of the body `name` (body frame). Throws
+  /// std::invalid_argument naming the body when it has none or a piece is not finite.
+  ReferenceBody(const std::string& name, const std::vector<Shape<double>>& pieces);
 
   /// The number of convex pieces.
   int pieceCount() const { return int(pieces_.size()); }
@@ -75,7 +75,7 @@ class ReferenceBody {
   };
   int build(int first, int count);
 
-  std::vector<Shape<double>> shapes_;  // the pieces as WorldBody holds them (GJK's input)
+  std::vector<Shape<double>> shapes_;  // the pieces as given (GJK's input)
   std::vector<Piece> pieces_;
   double extent_ = 0;       // the largest |centre| + sphere radius
   std::vector<int> order_;  // piece indices, grouped by leaf
@@ -94,11 +94,6 @@ class ReferenceBody {
 double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA, const ReferenceBody& b,
                                const Pose<double>& poseB);
 
-/// referenceSignedDistance of two bodies prepared on the spot: for a few calls (the
-/// world's start check); prepare a ReferenceBody once to measure a body often.
-double referenceSignedDistance(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b,
-                               const Pose<double>& poseB);
-
 /// The depth a pair must reach within a frame, with no collision reported, to count as
 /// having tunnelled: twice the collision tolerance, or, for a pair that starts the frame
 /// already that deep (two bodies left resting in each other, whose depth the penetration
@@ -107,18 +102,11 @@ inline double tunnellingThreshold(double distanceAtStart, double tolerance) {
   return std::min(-2 * tolerance, distanceAtStart - tolerance);
 }
 
-/// True when d(t) falls to `threshold` or below somewhere in [t0, t1], given that d changes at
+/// The first time d(t) falls to `threshold` or below in [t0, t1] (-1 if it never does), given that d changes at
 /// most `lipschitz` per unit time (reference::firstContact, 8 samples and bisection down to a
 /// time in which d changes by a twentieth of |threshold|, so a fast pass is proven clean
 /// rather than reported for want of resolution).
-bool firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
-                           double t1);
-
-/// The independent checks of the frame [T0, T1] just run (the paths each body took in it,
-/// FrameState::paths): the deepest penetration at T1, and the pairs with no collision
-/// reported that interpenetrated during the frame (tunnellingThreshold, by dense sampling
-/// with a Lipschitz bound on their distance), into the frame's counters.
-void checkFrame(StepContext& step, const std::vector<std::shared_ptr<const ReferenceBody>>& bodies, double T0,
-                double T1);
+double firstInterpenetration(const std::function<double(double)>& d, double lipschitz, double threshold, double t0,
+                             double t1);
 
 }  // namespace gjkx

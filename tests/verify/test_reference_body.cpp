@@ -1,7 +1,7 @@
-// The independent checks' distance of two many-piece bodies (checks.hpp): the search that
+// The independent checks' distance of two many-piece bodies (gjkx/verify/reference_body.hpp): the search that
 // measures only the piece pairs its bounds cannot rule out gives the least over all piece
 // pairs, to the bit, measured pair by pair with referencePieceDistance.
-#include <gjkx/timewarp/checks.hpp>
+#include <gjkx/verify/reference_body.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -9,11 +9,20 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace gjkx;
 
 namespace {
+
+/// A body as the checks take it: a name and its convex pieces.
+struct Body {
+  std::string name;
+  std::vector<Shape<double>> pieces;
+};
+
+ReferenceBody prepared(const Body& body) { return ReferenceBody(body.name, body.pieces); }
 
 /// A ball about a piece in its body's frame: about its axis-aligned box, which the support
 /// mapping gives exactly (the extreme points along the six axis directions).
@@ -30,7 +39,7 @@ std::pair<Eigen::Vector3d, double> ballAbout(const Shape<double>& piece) {
 /// The least referencePieceDistance over every piece pair: what the search must equal.
 /// A pair whose balls are farther apart than the least so far (with a margin for rounding)
 /// cannot be the least, so it is not measured: the answer is the same.
-double allPairs(const WorldBody& a, const Pose<double>& poseA, const WorldBody& b, const Pose<double>& poseB) {
+double allPairs(const Body& a, const Pose<double>& poseA, const Body& b, const Pose<double>& poseB) {
   double least = std::numeric_limits<double>::infinity();
   for (const auto& pa : a.pieces) {
     const auto [centreA, radiusA] = ballAbout(pa);
@@ -59,8 +68,8 @@ Pose<double> randomPose(std::mt19937& rng, const Eigen::Vector3d& lo, const Eige
 
 /// A bone-like body: small hulls (the reference measures them), two hulls of more than 16
 /// vertices (GJK measures them), a box, a sphere and a capsule, about a 0.2-wide cluster.
-WorldBody boneLike(std::mt19937& rng) {
-  WorldBody body;
+Body boneLike(std::mt19937& rng) {
+  Body body;
   body.name = "bone";
   for (int k = 0; k < 6; ++k) {
     const Eigen::Vector3d centre = uniform(rng, -0.08, 0.08);
@@ -82,8 +91,8 @@ WorldBody boneLike(std::mt19937& rng) {
 
 /// A plant-like body: thin prisms on the triangles of a wavy sheet in z in [0, 0.1], the
 /// triangles sharing vertices as a leaf's do (pairs of pieces at equal distance).
-WorldBody plantLike(int cells) {
-  WorldBody body;
+Body plantLike(int cells) {
+  Body body;
   body.name = "plant";
   auto sheet = [&](int i, int j) {
     const double x = 0.4 * i / cells - 0.2, y = 0.4 * j / cells - 0.2;
@@ -104,8 +113,8 @@ WorldBody plantLike(int cells) {
 
 TEST_CASE("checks: the pruned search equals the least over all piece pairs, bone against plant") {
   std::mt19937 rng(11);
-  const WorldBody bone = boneLike(rng), plant = plantLike(7);  // 11 pieces against 98
-  const ReferenceBody boneRef(bone), plantRef(plant);
+  const Body bone = boneLike(rng), plant = plantLike(7);  // 11 pieces against 98
+  const ReferenceBody boneRef = prepared(bone), plantRef = prepared(plant);
   REQUIRE(boneRef.pieceCount() == 11);
   REQUIRE(plantRef.pieceCount() == 98);
   int overlapping = 0, apart = 0;
@@ -127,8 +136,8 @@ TEST_CASE("checks: the pruned search equals the least over all piece pairs, bone
 
 TEST_CASE("checks: the pruned search equals the least over all piece pairs, near ties of two bones") {
   std::mt19937 rng(5);
-  const WorldBody a = boneLike(rng), b = boneLike(rng);
-  const ReferenceBody refA(a), refB(b);
+  const Body a = boneLike(rng), b = boneLike(rng);
+  const ReferenceBody refA = prepared(a), refB = prepared(b);
   for (int k = 0; k < 24; ++k) {
     const Pose<double> poseA = randomPose(rng, {0, 0, 0}, {0, 0, 0});
     const Pose<double> poseB = randomPose(rng, {-0.25, -0.25, -0.25}, {0.25, 0.25, 0.25});
@@ -142,18 +151,18 @@ TEST_CASE("checks: the pruned search equals the least over all piece pairs, near
 }
 
 TEST_CASE("checks: a convex body against a convex body is their piece distance") {
-  WorldBody a, b;
+  Body a, b;
   a.pieces = {Sphere<double>(0.5)};
   b.pieces = {Box<double>(Eigen::Vector3d(1, 1, 1))};
   const Pose<double> poseA = Pose<double>::translate(Eigen::Vector3d(0, 0, 2)), poseB = Pose<double>::identity();
-  CHECK(referenceSignedDistance(ReferenceBody(a), poseA, ReferenceBody(b), poseB) == Approx(0.5).epsilon(1e-12));
-  CHECK(referenceSignedDistance(a, poseA, b, poseB) == referencePieceDistance(a.pieces[0], poseA, b.pieces[0], poseB));
+  CHECK(referenceSignedDistance(prepared(a), poseA, prepared(b), poseB) == Approx(0.5).epsilon(1e-12));
+  CHECK(referenceSignedDistance(prepared(a), poseA, prepared(b), poseB) == referencePieceDistance(a.pieces[0], poseA, b.pieces[0], poseB));
 }
 
 TEST_CASE("checks: a pose that is not finite is refused, not measured as infinitely far") {
-  WorldBody a;
+  Body a;
   a.pieces = {Sphere<double>(0.5), Box<double>(Eigen::Vector3d(0.1, 0.1, 0.1))};
-  const ReferenceBody ref(a);
+  const ReferenceBody ref = prepared(a);
   Pose<double> bad = Pose<double>::identity();
   bad.translation.x() = std::nan("");
   CHECK_THROWS_WITH(referenceSignedDistance(ref, bad, ref, Pose<double>::identity()), Catch::Contains("not finite"));
@@ -161,8 +170,8 @@ TEST_CASE("checks: a pose that is not finite is refused, not measured as infinit
 }
 
 TEST_CASE("checks: a body with no pieces is refused by name") {
-  WorldBody empty;
+  Body empty;
   empty.name = "ghost";
   empty.pieces.clear();
-  CHECK_THROWS_WITH(ReferenceBody(empty), Catch::Contains("ghost") && Catch::Contains("no pieces"));
+  CHECK_THROWS_WITH(prepared(empty), Catch::Contains("ghost") && Catch::Contains("no pieces"));
 }
