@@ -89,11 +89,11 @@ int main(int argc, char** argv) {
   std::unique_ptr<gjkx::World> world;
   try {
     scene = gjkx::loadScene(scenePath);
-    if (ordering == "timewarp") scene.ordering = gjkx::Ordering::Timewarp;
-    if (ordering == "toi_heap") scene.ordering = gjkx::Ordering::ToiHeap;
-    if (ordering == "fixed_step") scene.ordering = gjkx::Ordering::FixedStep;
-    if (scalar == "float") scene.scalar = gjkx::CollisionScalar::Float;
-    if (scalar == "double") scene.scalar = gjkx::CollisionScalar::Double;
+    if (ordering == "timewarp") scene.run.ordering = gjkx::Ordering::Timewarp;
+    if (ordering == "toi_heap") scene.run.ordering = gjkx::Ordering::ToiHeap;
+    if (ordering == "fixed_step") scene.run.ordering = gjkx::Ordering::FixedStep;
+    if (scalar == "float") scene.run.scalar = gjkx::CollisionScalar::Float;
+    if (scalar == "double") scene.run.scalar = gjkx::CollisionScalar::Double;
     if (tolerance > 0) scene.collisionTolerance = tolerance;
     gjkx::WorldSettings settings;
     settings.variant = variant == "paper" ? gjkx::ExtrusionVariant::Paper : gjkx::ExtrusionVariant::Certified;
@@ -177,8 +177,8 @@ int main(int argc, char** argv) {
   std::printf("%s\n", line);
   std::ofstream summary(out + "/summary.txt");
   summary << line << "\nRUN scene=" << scenePath << " bodies=" << world->bodies().size()
-          << " scalar=" << (scene.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " variant=" << variant
-          << " ordering=" << gjkx::orderingName(scene.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
+          << " scalar=" << (scene.run.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " variant=" << variant
+          << " ordering=" << gjkx::orderingName(scene.run.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
           << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts ? "off" : "on")
           << " coherence=" << (coldStarts || noCoherence ? "off" : "on")
           << " front_tracking=" << (noFronts ? "off" : "on") << " impulse_tolerance=" << impulse.absoluteTolerance

@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
   for (gjkx::Ordering ordering : {gjkx::Ordering::Timewarp, gjkx::Ordering::ToiHeap, gjkx::Ordering::FixedStep}) {
     if (ordering == gjkx::Ordering::FixedStep && !fixedToo) continue;
     gjkx::Scene scene = fallingIntoABox(count, duration, 2026);
-    scene.ordering = ordering;
-    scene.scalar = scalar == "float" ? gjkx::CollisionScalar::Float : gjkx::CollisionScalar::Double;
+    scene.run.ordering = ordering;
+    scene.run.scalar = scalar == "float" ? gjkx::CollisionScalar::Float : gjkx::CollisionScalar::Double;
     gjkx::WorldSettings settings;
     settings.checks = false;
     std::unique_ptr<gjkx::World> world;

@@ -43,9 +43,9 @@ TEST_CASE("scene: every key is read") {
   CHECK(scene.collisionTolerance == 0.001);
   CHECK(scene.restitution == 0.5);
   CHECK(scene.friction == 0.25);
-  CHECK(scene.scalar == CollisionScalar::Double);
-  CHECK(scene.ordering == Ordering::ToiHeap);
-  CHECK(scene.fixedSubsteps == 4);
+  CHECK(scene.run.scalar == CollisionScalar::Double);
+  CHECK(scene.run.ordering == Ordering::ToiHeap);
+  CHECK(scene.run.fixedSubsteps == 4);
   REQUIRE(scene.bodies.size() == 2);
   const BodySpec& b = scene.bodies[0];
   CHECK(b.shape.kind == ShapeSpec::Kind::Capsule);
@@ -63,8 +63,8 @@ TEST_CASE("scene: defaults are the paper's settings") {
   CHECK(scene.frameRate == 24);
   CHECK(scene.restitution == 0.7);
   CHECK(scene.friction == 0.4);
-  CHECK(scene.scalar == CollisionScalar::Float);
-  CHECK(scene.ordering == Ordering::Timewarp);
+  CHECK(scene.run.scalar == CollisionScalar::Float);
+  CHECK(scene.run.ordering == Ordering::Timewarp);
   CHECK(scene.collisionTolerance == Approx(std::sqrt(double(std::numeric_limits<float>::epsilon()))).epsilon(1e-6));
 }
 

@@ -154,8 +154,8 @@ TEST_CASE("the full and the reduced scene load into the world: no two bones over
     CHECK(scene.frameRate == 24);
     CHECK(scene.restitution == 0.7);
     CHECK(scene.friction == 0.4);
-    CHECK(scene.scalar == gjkx::CollisionScalar::Float);
-    CHECK(scene.ordering == gjkx::Ordering::Timewarp);
+    CHECK(scene.run.scalar == gjkx::CollisionScalar::Float);
+    CHECK(scene.run.ordering == gjkx::Ordering::Timewarp);
     gjkx::WorldSettings settings;
     settings.checks = false;
     const gjkx::World world(scene, settings);  // throws if two bodies overlap at the start

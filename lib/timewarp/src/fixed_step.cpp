@@ -9,7 +9,7 @@ namespace gjkx {
 
 template <typename S>
 void runFixedStep(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1) {
-  const int steps = step.scene.fixedSubsteps;
+  const int steps = step.scene.run.fixedSubsteps;
   FrameCounters& c = step.frame.report.counters;
   for (int s = 0; s < steps; ++s) {
     const double ta = T0 + (T1 - T0) * s / steps, tb = s + 1 == steps ? T1 : T0 + (T1 - T0) * (s + 1) / steps;

@@ -3,7 +3,7 @@
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/timewarp/contact.hpp>
-#include <gjkx/timewarp/motion_cast.hpp>
+#include <gjkx/motion/motion_cast.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -248,8 +248,8 @@ bool NarrowPhase<S>::touchingAt(StepContext& step, int i, int j, double t, const
     GjkResult<double> g;
     {
       PartTimer timer(step.frame.report.parts.collisionDetection);
-      const auto r = gjk(Placed<Shape<S>>{piecesOf(step.bodies, i)[p.a], castPose<S>(si.worldFromBody)},
-                         Placed<Shape<S>>{piecesOf(step.bodies, j)[p.b], castPose<S>(sj.worldFromBody)});
+      const auto r = gjk(Placed<Shape<S>>{piecesOf(step.bodies, i)[p.a], si.worldFromBody.template cast<S>()},
+                         Placed<Shape<S>>{piecesOf(step.bodies, j)[p.b], sj.worldFromBody.template cast<S>()});
       g.status = r.status;
       g.distance = double(r.distance);
       g.witnessP = r.witnessP.template cast<double>();

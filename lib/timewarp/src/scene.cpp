@@ -182,22 +182,22 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
   if (root.contains("friction")) scene.friction = nonNegative(root["friction"], where, "friction");
   if (root.contains("scalar")) {
     const std::string s = text(root["scalar"], where, "scalar");
-    if (s == "float") scene.scalar = CollisionScalar::Float;
-    else if (s == "double") scene.scalar = CollisionScalar::Double;
+    if (s == "float") scene.run.scalar = CollisionScalar::Float;
+    else if (s == "double") scene.run.scalar = CollisionScalar::Double;
     else where.fail("scalar", "must be \"float\" or \"double\", got \"" + s + "\"");
   }
   if (root.contains("ordering")) {
     const std::string s = text(root["ordering"], where, "ordering");
-    if (s == "timewarp") scene.ordering = Ordering::Timewarp;
-    else if (s == "toi_heap") scene.ordering = Ordering::ToiHeap;
-    else if (s == "fixed_step") scene.ordering = Ordering::FixedStep;
+    if (s == "timewarp") scene.run.ordering = Ordering::Timewarp;
+    else if (s == "toi_heap") scene.run.ordering = Ordering::ToiHeap;
+    else if (s == "fixed_step") scene.run.ordering = Ordering::FixedStep;
     else where.fail("ordering", "must be \"timewarp\", \"toi_heap\" or \"fixed_step\", got \"" + s + "\"");
   }
   if (root.contains("fixed_substeps")) {
     const Json& n = root["fixed_substeps"];
     if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 100000)
       where.fail("fixed_substeps", "must be an integer from 1 to 100000, got " + n.dump());
-    scene.fixedSubsteps = n.get<int>();
+    scene.run.fixedSubsteps = n.get<int>();
   }
   const Json& bodies = root["bodies"];
   if (!bodies.is_array()) where.fail("bodies", "must be an array of bodies");

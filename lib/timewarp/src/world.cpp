@@ -43,7 +43,7 @@ World::World(const Scene& scene, const WorldSettings& settings)
       settings_(validated(settings)),
       impulse_(settings.impulse),
       bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate)),
-      narrow_(narrowPhaseOf(scene.scalar, bodies_)),
+      narrow_(narrowPhaseOf(scene.run.scalar, bodies_)),
       frameCount_(gjkx::frameCount(scene)) {
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
   // The independent checks' own view of every body (gjkx/verify), made once: they measure
@@ -128,7 +128,7 @@ FrameReport World::step() {
               const double ta = k == 0 ? T0 : T0 + (T1 - T0) * k / intervals;
               const double tb = k + 1 == intervals ? T1 : T0 + (T1 - T0) * (k + 1) / intervals;
               step.intervalEnd = tb;
-              switch (scene_.ordering) {
+              switch (scene_.run.ordering) {
                 case Ordering::Timewarp: runTimewarp(step, narrow, ta, tb); break;
                 case Ordering::ToiHeap: runToiHeap(step, narrow, ta, tb); break;
                 case Ordering::FixedStep: runFixedStep(step, narrow, ta, tb); break;

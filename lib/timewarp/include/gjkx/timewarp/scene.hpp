@@ -97,7 +97,19 @@ struct BodySpec {
   bool isStatic = false;
 };
 
-/// A whole scene: the settings and the bodies.
+/// How a scene asks to be run (the file's keys `scalar`, `ordering` and `fixed_substeps`),
+/// kept apart from what the scene is; gjkx_simulate's options override them, and the
+/// world's own settings (settings.hpp) say the rest.
+struct SceneRun {
+  /// The scalar type of collision detection.
+  CollisionScalar scalar = CollisionScalar::Float;
+  /// How collisions are ordered.
+  Ordering ordering = Ordering::Timewarp;
+  /// Steps per frame of the fixed-step ordering.
+  int fixedSubsteps = 8;
+};
+
+/// A whole scene: what is simulated (its world's constants and its bodies), and how it asks to be run.
 struct Scene {
   /// Gravity, world units per second squared.
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
@@ -111,12 +123,8 @@ struct Scene {
   double restitution = 0.7;
   /// Coefficient of dynamic friction mu (the paper: 0.4).
   double friction = 0.4;
-  /// The scalar type of collision detection.
-  CollisionScalar scalar = CollisionScalar::Float;
-  /// How collisions are ordered.
-  Ordering ordering = Ordering::Timewarp;
-  /// Steps per frame of the fixed-step ordering.
-  int fixedSubsteps = 8;
+  /// How it is run (the keys `scalar`, `ordering`, `fixed_substeps`).
+  SceneRun run;
   /// The bodies.
   std::vector<BodySpec> bodies;
   /// The folder mesh paths are relative to.

@@ -1,8 +1,10 @@
 /// @file
-/// @brief A body's path in the scalar type of collision detection (the paper ran in float, §6).
+/// @brief A motion in another scalar type: a body's path in the scalar of collision detection
+/// (the paper ran in float, §6).
 ///
 /// The dynamics integrates in double; collision detection runs in the scene's scalar type.
-/// These convert a pose or a motion, alternative by alternative, rounding each number once.
+/// castMotion converts a motion alternative by alternative, rounding each number once (a
+/// pose by Pose::cast).
 #pragma once
 
 #include <gjkx/motion/motion.hpp>
@@ -12,15 +14,6 @@
 #include <type_traits>
 
 namespace gjkx {
-
-/// A pose in the scalar type To.
-template <typename To, typename From>
-Pose<To> castPose(const Pose<From>& p) {
-  Pose<To> q;
-  q.rotation = p.rotation.template cast<To>();
-  q.translation = p.translation.template cast<To>();
-  return q;
-}
 
 /// The end of an interval rounded to To, kept after its rounded start: an interval shorter
 /// than To's spacing there would otherwise round to nothing.
@@ -40,20 +33,20 @@ Motion<To> castMotion(const Motion<From>& motion) {
         [](const auto& m) -> Motion<To> {
           using M = std::decay_t<decltype(m)>;
           if constexpr (std::is_same_v<M, StaticMotion<From>>) {
-            return Motion<To>::fixed(castPose<To>(m.start));
+            return Motion<To>::fixed(m.start.template cast<To>());
           } else if constexpr (std::is_same_v<M, ConstantVelocity<From>>) {
-            return Motion<To>::constantVelocity(castPose<To>(m.start), m.velocity.template cast<To>(), To(m.t0));
+            return Motion<To>::constantVelocity(m.start.template cast<To>(), m.velocity.template cast<To>(), To(m.t0));
           } else if constexpr (std::is_same_v<M, ConstantAcceleration<From>>) {
-            return Motion<To>::constantAcceleration(castPose<To>(m.start), m.velocity.template cast<To>(),
+            return Motion<To>::constantAcceleration(m.start.template cast<To>(), m.velocity.template cast<To>(),
                                                     m.acceleration.template cast<To>(), To(m.t0));
           } else if constexpr (std::is_same_v<M, ScrewMotion<From>>) {
-            return Motion<To>::screw(castPose<To>(m.start), m.velocity.template cast<To>(),
+            return Motion<To>::screw(m.start.template cast<To>(), m.velocity.template cast<To>(),
                                      m.angularVelocity.template cast<To>(), To(m.t0));
           } else if constexpr (std::is_same_v<M, PoseInterpolation<From>>) {
-            return Motion<To>::interpolate(castPose<To>(m.from), castPose<To>(m.to), To(m.t0), laterThan(To(m.t0), m.t1));
+            return Motion<To>::interpolate(m.from.template cast<To>(), m.to.template cast<To>(), To(m.t0), laterThan(To(m.t0), m.t1));
           } else {
             static_assert(std::is_same_v<M, FreeFlightPath<From>>, "castMotion: a motion alternative is missing");
-            return Motion<To>::freeFlight(castPose<To>(m.start), m.velocity.template cast<To>(),
+            return Motion<To>::freeFlight(m.start.template cast<To>(), m.velocity.template cast<To>(),
                                           m.acceleration.template cast<To>(), m.endRotation.template cast<To>(),
                                           To(m.t0), laterThan(To(m.t0), m.t1));
           }
