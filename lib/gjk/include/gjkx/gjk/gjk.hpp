@@ -444,7 +444,9 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
 /// u is \f$(b v - c)/a\f$ clamped. f is a convex quadratic, so: take the lines' u clamped
 /// (any u when they are parallel, \f$a e - b^2 = 0\f$), the best v for it, and if that v had
 /// to be clamped, the best u for the clamped v. A point core (a = 0 or e = 0) fixes its
-/// parameter at 0 and the other is one projection.
+/// parameter at 0 and the other is one projection. Its independent check, in long double
+/// and written otherwise (no product of lengths subtracted), is the reference library's
+/// closestSegmentSegment (gjkx/reference/closest_points.hpp; tests/gjk/test_gjk_rounded.cpp).
 template <typename S>
 std::pair<S, S> closestParametersOfSegments(const CoreEnds<S>& A, const CoreEnds<S>& B) {
   const Vector3<S> d1 = A.b - A.a, d2 = B.b - B.a, r = A.a - B.a;

@@ -197,6 +197,11 @@ struct SegmentPair {
 /// clamps it to [0, 1] and then the closest point of the second segment to that point;
 /// the nearest of the five candidates is returned.
 ///
+/// One other copy is kept on purpose: GJK's closed form for two spheres or capsules
+/// (`detail::closestParametersOfSegments` in gjkx/gjk/gjk.hpp), in the stage's scalar and
+/// with Ericson's parameters, fast. This one is its independent check
+/// (tests/gjk/test_gjk_rounded.cpp holds the first to it), so the two share no code.
+///
 /// Accuracy: every candidate is a pair of points on the segments (within round-off), so
 /// its distance is an upper bound, and the best one is the minimum within a few eps times
 /// the size of the coordinates, however parallel the segments are. As they turn parallel
