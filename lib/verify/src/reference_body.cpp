@@ -3,6 +3,7 @@
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
+#include <gjkx/reference/closest_points.hpp>
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/reference/time_of_impact.hpp>
 
@@ -162,21 +163,14 @@ double supportingDistance(const PlacedPiece& a, const PlacedPiece& b, bool faces
   return best - a.radius - b.radius;
 }
 
-/// The closest points of the segments [p1, q1] and [p2, q2] in double (a segment may be a
-/// point): the first segment's parameter minimising the distance to the second's line,
-/// clamped, then the second's, clamped, then the first's again against that point. Only a
-/// direction is wanted of it (any direction gives a valid bound), so the parallel case
-/// may take any of its closest pairs.
+/// The closest points of the segments [p1, q1] and [p2, q2] (a segment may be a point), by
+/// the reference's own (closestSegmentSegment, long double): only a direction is wanted of
+/// them, and any direction gives a valid bound.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> closestOnSegments(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
                                                               const Eigen::Vector3d& p2, const Eigen::Vector3d& q2) {
-  const Eigen::Vector3d d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), b = d1.dot(d2), c = d1.dot(r), f = d2.dot(r);
-  auto clamp01 = [](double x) { return std::min(1.0, std::max(0.0, x)); };
-  const double denom = a * e - b * b;
-  double s = denom > 0 ? clamp01((b * f - c * e) / denom) : 0.0;
-  const double t = e > 0 ? clamp01((b * s + f) / e) : 0.0;
-  s = a > 0 ? clamp01((b * t - c) / a) : 0.0;
-  return {p1 + s * d1, p2 + t * d2};
+  const reference::SegmentPair closest = reference::closestSegmentSegment(
+      p1.cast<reference::Real>(), q1.cast<reference::Real>(), p2.cast<reference::Real>(), q2.cast<reference::Real>());
+  return {closest.onFirst.cast<double>(), closest.onSecond.cast<double>()};
 }
 
 /// SD along the line between the closest points of the nearest pair of edges of a and b

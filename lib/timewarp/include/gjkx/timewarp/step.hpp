@@ -66,7 +66,10 @@ struct FrameState {
   std::vector<Struck> struck;  ///< per body
   /// Two bodies' pieces that came within the tolerance this frame (response.hpp's instant pass).
   struct Touching {
-    int i, pi, j, pj;  ///< piece pi of body i, piece pj of body j
+    int i;   ///< the first body
+    int pi;  ///< its piece
+    int j;   ///< the second body
+    int pj;  ///< its piece
     /// Same pieces.
     bool operator==(const Touching& o) const { return i == o.i && pi == o.pi && j == o.j && pj == o.pj; }
   };
