@@ -3,7 +3,6 @@
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/support_mapping/placed.hpp>
-#include <gjkx/reference/closest_points.hpp>
 #include <gjkx/reference/polytope_distance.hpp>
 #include <gjkx/reference/time_of_impact.hpp>
 
@@ -164,13 +163,14 @@ double supportingDistance(const PlacedPiece& a, const PlacedPiece& b, bool faces
 }
 
 /// The closest points of the segments [p1, q1] and [p2, q2] (a segment may be a point), by
-/// the reference's own (closestSegmentSegment, long double): only a direction is wanted of
-/// them, and any direction gives a valid bound.
+/// GJK's closed form for segment cores (gjk.hpp, closestParametersOfSegments), in double.
+/// Only a direction is wanted of them, and any direction gives a valid bound, so the
+/// checks' answer does not rest on it; the reference's long-double copy costs twice the
+/// checks' whole time on the torso in this loop over edge pairs.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> closestOnSegments(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
                                                               const Eigen::Vector3d& p2, const Eigen::Vector3d& q2) {
-  const reference::SegmentPair closest = reference::closestSegmentSegment(
-      p1.cast<reference::Real>(), q1.cast<reference::Real>(), p2.cast<reference::Real>(), q2.cast<reference::Real>());
-  return {closest.onFirst.cast<double>(), closest.onSecond.cast<double>()};
+  const auto [u, v] = detail::closestParametersOfSegments(CoreEnds<double>{p1, q1}, CoreEnds<double>{p2, q2});
+  return {p1 + u * (q1 - p1), p2 + v * (q2 - p2)};
 }
 
 /// SD along the line between the closest points of the nearest pair of edges of a and b
