@@ -44,26 +44,37 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file: bodies in free flight, collisions found by the paper's solver and "
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
                "gjkx_simulate"};
-  std::string scenePath, out = ".", ordering, scalar, variant = "certified";
-  double tolerance = 0;
+  std::string scenePath, out = ".", ordering, scalar, variant = "certified", logPath, meshCache;
+  double tolerance = 0, duration = 0, frameRate = 0;
   bool checks = false, noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
   gjkx::ImpulseSettings impulse;
   app.add_option("scene", scenePath, "the scene file (JSON)")->required();
-  app.add_option("--out", out, "folder for frames.csv and bodies.csv (created)");
+  app.footer("Every key of the scene file, every option and every column of the outputs: docs/07_timewarp.md in "
+             "the source tree (the Doxygen page '07 Timewarp': cmake --build build --target docs).");
+  app.add_option("--out", out, "folder for frames.csv and bodies.csv (created)")->capture_default_str();
+  const auto positiveNumber = CLI::Validator(
+      [](const std::string& text) {
+        double value = 0;
+        const bool parsed = CLI::detail::lexical_cast(text, value);
+        return parsed && std::isfinite(value) && value > 0 ? std::string() : "must be positive and finite, got " + text;
+      },
+      "POSITIVE");
+  app.add_option("--duration", duration, "override the scene's duration (s)")->check(positiveNumber);
+  app.add_option("--frame-rate", frameRate, "override the scene's frames per second")->check(positiveNumber);
+  app.add_option("--log", logPath,
+                 "write every collision to this CSV file: time, the two bodies and their pieces, the closing "
+                 "normal speed, the impulse's size, microcollision or not");
+  app.add_option("--mesh-cache", meshCache,
+                 "folder of the mesh decomposition cache (default: $GJKX_MESH_CACHE, else $XDG_CACHE_HOME/gjkx, "
+                 "else ~/.cache/gjkx; an empty string: no cache)");
   app.add_option("--ordering", ordering, "override the scene's ordering")
       ->check(CLI::IsMember({"timewarp", "toi_heap", "fixed_step"}));
   app.add_option("--scalar", scalar, "override the scene's scalar type")->check(CLI::IsMember({"float", "double"}));
   app.add_option("--variant", variant, "the extrusion test: the paper's or the certified one")
-      ->check(CLI::IsMember({"paper", "certified"}));
+      ->check(CLI::IsMember({"paper", "certified"}))
+      ->capture_default_str();
   app.add_option("--tolerance", tolerance, "override the scene's collision tolerance (length units)")
-      ->check(CLI::Validator(
-          [](const std::string& text) {
-            double value = 0;
-            const bool parsed = CLI::detail::lexical_cast(text, value);
-            return parsed && std::isfinite(value) && value > 0 ? std::string()
-                                                                 : "must be a positive finite length, got " + text;
-          },
-          "POSITIVE"));
+      ->check(positiveNumber);
   app.add_flag("--checks", checks,
                "run the independent checks at each frame's end (penetration, tunnelling, by the reference library): "
                "what they find goes to standard error and DIR/checks.csv; they cost more than the method on the torso");
@@ -95,6 +106,8 @@ int main(int argc, char** argv) {
     if (scalar == "float") scene.run.scalar = gjkx::CollisionScalar::Float;
     if (scalar == "double") scene.run.scalar = gjkx::CollisionScalar::Double;
     if (tolerance > 0) scene.collisionTolerance = tolerance;
+    if (duration > 0) scene.duration = duration;
+    if (frameRate > 0) scene.frameRate = frameRate;
     gjkx::WorldSettings settings;
     settings.variant = variant == "paper" ? gjkx::ExtrusionVariant::Paper : gjkx::ExtrusionVariant::Certified;
     noChecks = noChecks || !checks;
@@ -104,6 +117,7 @@ int main(int argc, char** argv) {
     settings.frontTracking = !noFronts;
     impulse.relativeTolerance = impulse.absoluteTolerance;
     settings.impulse = impulse;
+    if (app.count("--mesh-cache")) settings.meshCache = meshCache;
     world = std::make_unique<gjkx::World>(scene, settings);
   } catch (const std::exception& e) {
     std::cerr << "gjkx_simulate: " << e.what() << "\n";
@@ -123,6 +137,18 @@ int main(int argc, char** argv) {
   frames << gjkx::frameHeader() << '\n';
   bodies << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
   const bool bar = !quiet && isatty(fileno(stderr));
+  // The collision log (--log): one row per collision, in the order they were resolved.
+  const auto writeLog = [&]() {
+    if (logPath.empty()) return true;
+    std::ofstream log(logPath);
+    log << "time,body,other,piece,other_piece,approach_speed,impulse,microcollision\n";
+    for (const gjkx::CollisionRecord& c : world->collisionLog())
+      log << c.time << ',' << world->bodies()[std::size_t(c.i)].name << ',' << world->bodies()[std::size_t(c.j)].name
+          << ',' << c.pieceI << ',' << c.pieceJ << ',' << c.approachSpeed << ',' << c.impulse << ','
+          << (c.microcollision ? 1 : 0) << '\n';
+    if (!log) std::cerr << "gjkx_simulate: cannot write the collision log " << logPath << "\n";
+    return bool(log);
+  };
   gjkx::FrameCounters total;  // the whole run's counts
   double wall = 0;
   try {
@@ -159,9 +185,11 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     if (bar) std::fprintf(stderr, "\n");
     std::cerr << "gjkx_simulate: stopped at t = " << world->time() << ": " << e.what() << "\n";
+    writeLog();  // what happened up to the stop
     return 1;
   }
   if (bar) std::fprintf(stderr, "\n");
+  if (!writeLog()) return 1;
   // Brent's iterations per query that needed it (the paper: 2.2 on average, 43 at worst),
   // and the share of those that ended in a photo finish (the paper: 70% false alarms).
   char line[512];

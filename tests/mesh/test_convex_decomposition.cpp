@@ -5,6 +5,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
+
+#include <cstdlib>
+
 #include <filesystem>
 #include <random>
 
@@ -81,6 +85,32 @@ TEST_CASE("the cache: a second run reads the same pieces, another setting is ano
   moved.vertices[0].x() += 1e-9;
   CHECK(decompositionKey(moved, DecompositionSettings{}) != decompositionKey(mesh, DecompositionSettings{}));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the cache goes where caches go: GJKX_MESH_CACHE, else XDG_CACHE_HOME/gjkx, else ~/.cache/gjkx", "[mesh]") {
+  // Nothing compiled in: the default folder is read from the environment each time.
+  const auto saved = [](const char* name) { const char* v = std::getenv(name); return v ? std::optional<std::string>(v) : std::nullopt; };
+  const auto restore = [](const char* name, const std::optional<std::string>& v) {
+    if (v) ::setenv(name, v->c_str(), 1);
+    else ::unsetenv(name);
+  };
+  const auto chosen = saved("GJKX_MESH_CACHE"), xdg = saved("XDG_CACHE_HOME"), home = saved("HOME");
+  ::setenv("GJKX_MESH_CACHE", "/tmp/chosen-cache", 1);
+  CHECK(defaultDecompositionCacheDir() == "/tmp/chosen-cache");
+  ::unsetenv("GJKX_MESH_CACHE");
+  ::setenv("XDG_CACHE_HOME", "/tmp/xdg", 1);
+  CHECK(defaultDecompositionCacheDir() == "/tmp/xdg/gjkx");
+  ::unsetenv("XDG_CACHE_HOME");
+  ::setenv("HOME", "/tmp/someone", 1);
+  CHECK(defaultDecompositionCacheDir() == "/tmp/someone/.cache/gjkx");
+  restore("GJKX_MESH_CACHE", chosen);
+  restore("XDG_CACHE_HOME", xdg);
+  restore("HOME", home);
+  // A folder that cannot be made degrades to no cache: the pieces are computed all the same.
+  const TriangleMesh mesh = readMesh(kData + "/l_prism.off", {true});
+  const auto d = decompose(mesh, {}, "/proc/no-cache-here");
+  CHECK(d.report.cacheFile.empty());
+  CHECK(!d.pieces.empty());
 }
 
 TEST_CASE("bad settings and bad meshes are refused before HACD runs", "[mesh]") {

@@ -69,7 +69,7 @@ TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[s
   CHECK(firstLine(out / "frames.csv") ==
         "frame,time,wall_s,collision_checks,collisions,rollbacks,brent_iterations,photo_finishes,max_penetration,"
         "events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,tunnelled,integration_s,"
-        "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught,spin_restarts,event_caps");
+        "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught,spin_restarts,event_caps,projections");
   CHECK(firstLine(out / "bodies.csv") == "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy");
   const auto keys = summary(r.output);
   for (const char* key : {"frames", "sim_s", "wall_s", "collisions", "rollbacks", "brent_mean", "brent_max",
@@ -145,4 +145,34 @@ TEST_CASE("gjkx_simulate refuses a collision tolerance that is not a positive fi
     CHECK(r.output.find("--tolerance") != std::string::npos);
     CHECK(r.output.find("SUMMARY") == std::string::npos);
   }
+}
+
+TEST_CASE("gjkx_simulate overrides duration and frame rate, and writes the collision log", "[simulate]") {
+  const fs::path out = freshFolder("log");
+  const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/cradle.json\" --out \"" + out.string() +
+                            "\" --quiet --duration 0.5 --frame-rate 48 --log \"" + (out / "log.csv").string() + "\"");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const auto keys = summary(r.output);
+  REQUIRE(keys.count("frames") == 1);
+  CHECK(keys.at("frames") == "24");  // 0.5 s at 48 frames per second
+  REQUIRE(fs::exists(out / "log.csv"));
+  CHECK(firstLine(out / "log.csv") == "time,body,other,piece,other_piece,approach_speed,impulse,microcollision");
+  CHECK(lineCount(out / "log.csv") == 1 + std::stol(keys.at("collisions")));  // a row per collision
+  fs::remove_all(out);
+}
+
+TEST_CASE("gjkx_simulate refuses a duration whose frames do not fit, naming the file and the field", "[simulate]") {
+  const fs::path dir = freshFolder("long");
+  fs::create_directories(dir);
+  {
+    std::ofstream(dir / "long.json") << R"({ "duration": 9e7, "bodies": [ { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1] } ] })";
+  }
+  const Result r = simulate("\"" + (dir / "long.json").string() + "\" --out \"" + (dir / "out").string() + "\" --quiet");
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(r.output.find("long.json") != std::string::npos);
+  CHECK(r.output.find("'duration'") != std::string::npos);
+  CHECK(r.output.find("SUMMARY") == std::string::npos);
+  fs::remove_all(dir);
 }

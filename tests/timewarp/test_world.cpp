@@ -244,9 +244,9 @@ TEST_CASE("world: Newton's cradle passes the momentum down the row, in order") {
     const auto& log = world.collisionLog();
     REQUIRE(log.size() >= 4);
     for (int k = 0; k < 4; ++k) {
-      CHECK(log[k][1] == k);
-      CHECK(log[k][2] == k + 1);
-      if (k) CHECK(log[k][0] >= log[k - 1][0]);
+      CHECK(log[k].i == k);
+      CHECK(log[k].j == k + 1);
+      if (k) CHECK(log[k].time >= log[k - 1].time);
     }
     CHECK(world.stateOf(4).velocity.x() == Approx(1.0).epsilon(0.01));
     for (int k = 0; k < 4; ++k) CHECK(std::abs(world.stateOf(k).velocity.x()) < 0.02);
@@ -269,9 +269,9 @@ TEST_CASE("world: a blow passes through a row of touching balls at one instant, 
   const auto& log = world.collisionLog();
   REQUIRE(log.size() == 4);
   for (int k = 0; k < 4; ++k) {
-    CHECK(log[k][1] == k);
-    CHECK(log[k][2] == k + 1);
-    CHECK(log[k][0] == log[0][0]);
+    CHECK(log[k].i == k);
+    CHECK(log[k].j == k + 1);
+    CHECK(log[k].time == log[0].time);
   }
   CHECK(run.rollbacks == 1);
   CHECK(world.stateOf(4).velocity.x() == Approx(1.0).epsilon(1e-6));
@@ -403,7 +403,7 @@ TEST_CASE("world: a ball thrown at 10^6 m/s 2 mm over a box passes clean, neithe
       World world(scene, checked());
       const Run run = runAll(world);
       bool struck = false;
-      for (const auto& [time, i, j] : world.collisionLog()) struck = struck || (i == 1 && j == 2);
+      for (const CollisionRecord& c : world.collisionLog()) struck = struck || (c.i == 1 && c.j == 2);
       CHECK(run.tunnelled == 0);
       CHECK(struck == (above < 0));
       if (above > 0) CHECK(world.stateOf(1).velocity.norm() < 1e-3);  // the box rests as it was
@@ -450,4 +450,31 @@ TEST_CASE("world: a frame past the event cap ends with its status, counted, not 
   }
   CHECK(frames == world.frameCount());
   CHECK(capped > 0);
+}
+
+TEST_CASE("world: fixed steps hold a box dropped on the floor, and the dominoes stay out of it") {
+  // A discrete engine's projection (fixed_step.hpp): without it the box sank a little at
+  // every step that found it late and nothing lifted it back; the dominoes under fixed
+  // steps ended 0.55 m deep in the floor. What a frame's end shows is what the step's
+  // projection left: touching, within the tolerance band.
+  for (const char* scalar : {"float", "double"}) {
+    INFO(scalar);
+    const Scene scene = parseScene(std::string(R"({ "duration": 2, "ordering": "fixed_step", "scalar": ")") + scalar +
+                                   R"(", "bodies": [
+        { "name": "floor", "shape": {"box": [5, 5, 0.5]}, "position": [0, 0, -0.5], "static": true },
+        { "name": "box", "shape": {"box": [0.5, 0.5, 0.5]}, "position": [0, 0, 1.0] } ] })");
+    World world(scene, checked());
+    const Run run = runAll(world);
+    CHECK(run.tunnelled == 0);
+    CHECK(run.maxPenetration < 2 * scene.collisionTolerance);
+    CHECK(world.positionOf(1).z() == Approx(0.5).margin(2 * scene.collisionTolerance));
+  }
+  Scene dominoes = loadScene(std::string(GJKX_SCENES) + "/dominoes.json");
+  dominoes.run.ordering = Ordering::FixedStep;
+  World world(dominoes, checked());
+  const Run run = runAll(world);
+  // Was 0.55 m. Not yet within one tolerance: a domino lying on the floor under fixed steps
+  // still spins up in its corner impulses (to 16 rad/s) and ends up to 3 cm deep.
+  CHECK(run.maxPenetration < 0.05);
+  CHECK(run.tunnelled == 0);
 }

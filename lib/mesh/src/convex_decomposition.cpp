@@ -17,14 +17,11 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
-
-#ifndef GJKX_MESH_CACHE_DIR
-#define GJKX_MESH_CACHE_DIR "mesh-cache"
-#endif
 
 namespace gjkx {
 namespace {
@@ -131,7 +128,12 @@ void DecompositionSettings::validate() const {
     throw std::invalid_argument("decomposition.volumeWeight: must be finite and not negative");
 }
 
-std::string defaultDecompositionCacheDir() { return GJKX_MESH_CACHE_DIR; }
+std::string defaultDecompositionCacheDir() {
+  if (const char* chosen = std::getenv("GJKX_MESH_CACHE")) return chosen;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/gjkx";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/gjkx";
+  return "";
+}
 
 std::uint64_t decompositionKey(const TriangleMesh& mesh, const DecompositionSettings& s) {
   Fnv1a h;
@@ -169,7 +171,13 @@ ConvexDecomposition decompose(const TriangleMesh& mesh, const DecompositionSetti
   if (!cacheDir.empty()) {
     std::error_code error;
     std::filesystem::create_directories(cacheDir, error);
-    cacheFile = (std::filesystem::path(cacheDir) / (hex(decompositionKey(mesh, settings)) + ".pieces")).string();
+    if (::access(cacheDir.c_str(), W_OK) == 0) {
+      cacheFile = (std::filesystem::path(cacheDir) / (hex(decompositionKey(mesh, settings)) + ".pieces")).string();
+    } else {  // read-only or missing: no cache, said once
+      static bool warned = false;
+      if (!warned) std::fprintf(stderr, "gjkx: the mesh cache folder %s cannot be written: decompositions are not cached\n", cacheDir.c_str());
+      warned = true;
+    }
   }
   if (!cacheFile.empty() && readCache(cacheFile, d, mesh.triangles.size())) {
     d.report.fromCache = true;

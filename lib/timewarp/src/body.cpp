@@ -72,13 +72,13 @@ ConvexDecomposition polygonPieces(const TriangleMesh& mesh) {
   return out;
 }
 
-std::string bodyField(const BodySpec& body, std::size_t index, const std::string& field) {
-  return "body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
+std::string bodyField(const Scene& scene, const BodySpec& body, std::size_t index, const std::string& field) {
+  return scene.source + ": body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
 }
 
 }  // namespace
 
-std::vector<WorldBody> buildBodies(const Scene& scene, double duration) {
+std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const std::string& meshCache) {
   // A mesh is read and decomposed once however many bodies use it (the decomposition is
   // also cached on disk, gjkx/mesh/convex_decomposition.hpp).
   std::map<std::string, std::pair<TriangleMesh, ConvexDecomposition>> meshes;
@@ -97,7 +97,7 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration) {
         auto found = meshes.find(path);
         if (found == meshes.end()) {
           TriangleMesh mesh = readMesh(path);
-          ConvexDecomposition pieces = spec.isStatic ? polygonPieces(mesh) : decompose(mesh);
+          ConvexDecomposition pieces = spec.isStatic ? polygonPieces(mesh) : decompose(mesh, {}, meshCache);
           found = meshes.emplace(path, std::make_pair(std::move(mesh), std::move(pieces))).first;
         }
         const TriangleMesh& mesh = found->second.first;
@@ -117,7 +117,7 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration) {
         body.pieces = piecesOf<double>(body.source);
         body.shape = Polytope<double>::hull(all);
       } catch (const std::exception& e) {
-        throw std::invalid_argument(bodyField(spec, index, "shape.mesh") + ": " + e.what());
+        throw std::invalid_argument(bodyField(scene, spec, index, "shape.mesh") + ": " + e.what());
       }
     } else {
       body.source.convex = spec.shape;
@@ -129,7 +129,7 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration) {
           mass.centerOfMass = Eigen::Vector3d::Zero();
         }
       } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(bodyField(spec, index, "shape") + ": " + e.what());
+        throw std::invalid_argument(bodyField(scene, spec, index, "shape") + ": " + e.what());
       }
       for (auto& p : body.source.convex.points) p -= centerOfMass;
       body.shape = convexShapeOf<double>(body.source.convex, body.source.convex.points);

@@ -28,6 +28,7 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   impulseCaps += o.impulseCaps;
   spinRestarts += o.spinRestarts;
   eventCaps += o.eventCaps;
+  projections += o.projections;
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
   return *this;
@@ -72,6 +73,7 @@ const std::vector<FrameColumn>& frameColumns() {
       {"caught", [](const FrameReport& r) { return double(r.counters.caught); }, true},
       {"spin_restarts", [](const FrameReport& r) { return double(r.counters.spinRestarts); }, true},
       {"event_caps", [](const FrameReport& r) { return double(r.counters.eventCaps); }, true},
+      {"projections", [](const FrameReport& r) { return double(r.counters.projections); }, true},
   };
   return columns;
 }

@@ -25,7 +25,8 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   c.impulseSteps += result.integratorSteps;
   if (result.status == ImpulseStatus::StepCap) ++c.impulseCaps;
   if (result.status == ImpulseStatus::Microcollision) ++c.microcollisions;
-  step.collisionLog.push_back({hit.time, double(hit.i), double(hit.j)});
+  step.collisionLog.push_back({hit.time, hit.i, hit.j, hit.pieceI, hit.pieceJ, result.approachSpeed,
+                               result.impulse.norm(), result.status == ImpulseStatus::Microcollision});
   step.record(TraceEvent::Kind::Collision, hit.i, hit.j, hit.time, hit.time);
   // Zeno's wedge (response.hpp): caught after too many microcollisions from opposite
   // sides (a box sliding on a floor is struck along one normal only), or after too many

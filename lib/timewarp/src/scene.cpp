@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -202,6 +203,8 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
   const Json& bodies = root["bodies"];
   if (!bodies.is_array()) where.fail("bodies", "must be an array of bodies");
   if (bodies.empty()) where.fail("bodies", "must hold at least one body");
+  scene.source = source;
+  frameCount(scene);  // a duration whose frames do not fit is refused here, naming the field
   std::set<std::string> names;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     scene.bodies.push_back(parseBody(bodies[i], i, source));
@@ -224,7 +227,13 @@ Scene loadScene(const std::string& path) {
 }
 
 int frameCount(const Scene& scene) {
-  return std::max(1, int(std::ceil(scene.duration * scene.frameRate - 1e-9)));
+  constexpr double kMaxFrames = 1e8;
+  const double frames = std::ceil(scene.duration * scene.frameRate - 1e-9);
+  if (!(frames <= kMaxFrames))
+    throw std::invalid_argument(scene.source + ": field 'duration': " + std::to_string(scene.duration) +
+                                " s at frame_rate " + std::to_string(scene.frameRate) + " is " +
+                                std::to_string(frames) + " frames, more than 10^8");
+  return std::max(1, int(frames));
 }
 
 }  // namespace gjkx

@@ -42,7 +42,8 @@ World::World(const Scene& scene, const WorldSettings& settings)
     : scene_(scene),
       settings_(validated(settings)),
       impulse_(settings.impulse),
-      bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate)),
+      bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate,
+                          settings.meshCache.value_or(defaultDecompositionCacheDir()))),
       narrow_(narrowPhaseOf(scene.run.scalar, bodies_)),
       frameCount_(gjkx::frameCount(scene)) {
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
@@ -62,7 +63,7 @@ World::World(const Scene& scene, const WorldSettings& settings)
     const double d = verifier_->signedDistance(i, bodies_[i].path.start.worldFromBody, j,
                                                bodies_[j].path.start.worldFromBody);
     if (d < -scene.collisionTolerance)
-      throw std::invalid_argument("body '" + bodies_[i].name + "' (bodies[" + std::to_string(i) +
+      throw std::invalid_argument(scene.source + ": body '" + bodies_[i].name + "' (bodies[" + std::to_string(i) +
                                   "]) and body '" + bodies_[j].name + "' (bodies[" + std::to_string(j) +
                                   "]): field 'position' puts them overlapping at the start (by " +
                                   std::to_string(-d) + ")");

@@ -32,7 +32,7 @@ int main() {
     std::printf("first collision: none, expected at %.5f s\n", expected);
     ok = false;
   } else {
-    const double first = world.collisionLog().front()[0];
+    const double first = world.collisionLog().front().time;
     std::printf("first collision at %.5f s, expected %.5f s\n", first, expected);
     ok = ok && std::abs(first - expected) < 1e-3;
   }

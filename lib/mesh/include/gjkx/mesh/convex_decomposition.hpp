@@ -93,7 +93,10 @@ struct ConvexDecomposition {
   }
 };
 
-/// The folder the decomposition cache uses by default: `mesh-cache` inside the build tree.
+/// The folder the decomposition cache uses by default, where caches go: the environment
+/// variable `GJKX_MESH_CACHE` if set (empty: no cache), else `$XDG_CACHE_HOME/gjkx`, else
+/// `$HOME/.cache/gjkx`, else none (an empty string: caching off). Nothing compiled in: an
+/// installed program never writes into the tree it was built in.
 std::string defaultDecompositionCacheDir();
 
 /// A 64-bit hash (FNV-1a) of a mesh's vertices and triangles and the settings: the
@@ -102,7 +105,8 @@ std::uint64_t decompositionKey(const TriangleMesh& mesh, const DecompositionSett
 
 /// Decomposes `mesh` into convex pieces with HACD, or reads the pieces from
 /// `cacheDir/<key>.pieces` when an earlier run computed them (an empty `cacheDir` turns
-/// caching off). The mesh is validated first (`validateMesh`; real meshes often have holes,
+/// caching off; a folder that cannot be made or written degrades to no cache, with one
+/// warning on standard error per process). The mesh is validated first (`validateMesh`; real meshes often have holes,
 /// so closure is not required, but the report says whether the mesh is closed):
 /// std::invalid_argument names the mesh's source and the fault. A cluster whose
 /// vertices lie in one plane (no volume) is thickened by \f$10^{-6}\f$ of the mesh's

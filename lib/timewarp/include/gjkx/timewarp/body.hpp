@@ -17,6 +17,7 @@
 
 #include <gjkx/dynamics/free_flight.hpp>
 #include <gjkx/dynamics/rigid_body.hpp>
+#include <gjkx/mesh/convex_decomposition.hpp>
 #include <gjkx/motion/motion.hpp>
 #include <gjkx/support_mapping/shape.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -84,8 +85,11 @@ struct WorldBody {
 /// The bodies of `scene`: each shape read (a mesh through Assimp, decomposed once however
 /// many bodies use it), its mass properties, its frame moved to the centre of mass, and its
 /// start state flown for no time (a static body: over the whole `duration`, since it is
-/// never integrated again). Throws std::invalid_argument naming the body and the field.
-std::vector<WorldBody> buildBodies(const Scene& scene, double duration);
+/// never integrated again). Decompositions are cached in `meshCache` (empty: no cache;
+/// gjkx/mesh/convex_decomposition.hpp). Throws std::invalid_argument naming the scene's
+/// file, the body and the field.
+std::vector<WorldBody> buildBodies(const Scene& scene, double duration,
+                                   const std::string& meshCache = defaultDecompositionCacheDir());
 
 /// The bodies as the independent checks see them (gjkx/verify): names, pieces, hulls.
 std::vector<VerifiedBody> verifiedBodies(const std::vector<WorldBody>& bodies);

@@ -37,6 +37,7 @@ struct FrameCounters {
   long impulseCaps = 0;         ///< impulses whose integration reached ImpulseSettings::maxSteps (the impulse so far applied)
   long spinRestarts = 0;        ///< times the frame was run again in shorter intervals (a body spun past a half turn per interval)
   long eventCaps = 0;           ///< intervals whose events reached StepTuning's cap (FrameStatus::EventCap)
+  long projections = 0;         ///< overlapping pairs moved apart at a fixed step's end (fixed_step.hpp)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 
@@ -91,6 +92,18 @@ std::string frameHeader();
 
 /// The row of frames.csv for a frame (no newline).
 std::string frameRow(const FrameReport& report);
+
+/// One collision of the run, as the world logs it (World::collisionLog(), gjkx_simulate --log).
+struct CollisionRecord {
+  double time = 0;             ///< the time of impact t_c
+  int i = -1;                  ///< the first body
+  int j = -1;                  ///< the second body
+  int pieceI = 0;              ///< the convex piece of i
+  int pieceJ = 0;              ///< the convex piece of j
+  double approachSpeed = 0;    ///< the normal speed at which they closed (m/s, positive)
+  double impulse = 0;          ///< the size of the impulse applied (N s)
+  bool microcollision = false; ///< a microcollision (restitution 1, below the microcollision speed)
+};
 
 /// One record of the trace (WorldSettings::trace): what an ordering did to a body's local time.
 struct TraceEvent {

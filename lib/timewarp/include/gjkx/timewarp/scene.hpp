@@ -129,9 +129,14 @@ struct Scene {
   std::vector<BodySpec> bodies;
   /// The folder mesh paths are relative to.
   std::string folder = ".";
+  /// Where the scene was read from (the file's path, or parseScene's `source`): every
+  /// error found after parsing names it too.
+  std::string source = "scene";
 };
 
-/// The frames of the scene's duration (at least one).
+/// The frames of the scene's duration (at least one). Throws std::invalid_argument naming
+/// the scene and the field when duration × frame_rate is more than 10^8 frames (a count
+/// that would not fit, or a run of years).
 int frameCount(const Scene& scene);
 
 /// Parses a scene from JSON text; `source` names it in messages. Throws

@@ -12,6 +12,7 @@
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 
+#include <optional>
 #include <string>
 
 namespace gjkx {
@@ -128,6 +129,9 @@ struct WorldSettings {
   ImpulseSettings impulse;
   /// The constants of a step ("settings.tuning...").
   StepTuning tuning;
+  /// The folder of the mesh decomposition cache; unset: the default
+  /// (gjkx::defaultDecompositionCacheDir()), empty: no cache.
+  std::optional<std::string> meshCache;
 
   /// Throws std::invalid_argument naming `field`.member for a value out of its range.
   void validate(const std::string& field) const;

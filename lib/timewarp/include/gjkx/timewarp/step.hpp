@@ -93,7 +93,7 @@ struct StepContext {
   const ImpulseSettings& impulse;             ///< settings.impulse with the scene's microcollision speed
   std::vector<WorldBody>& bodies;             ///< the bodies
   std::vector<TraceEvent>& trace;             ///< filled when settings.trace
-  std::vector<std::array<double, 3>>& collisionLog;  ///< (time, body, other) of every collision
+  std::vector<CollisionRecord>& collisionLog;  ///< every collision of the run
   /// Per piece pair (i, pi, j, pj), the last reliable contact normal (contact.hpp), zero until one is seen.
   std::map<std::array<int, 4>, Eigen::Vector3d>& pairNormals;
   FrameState& frame;                          ///< the frame being run

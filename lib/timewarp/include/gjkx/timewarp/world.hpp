@@ -71,8 +71,8 @@ class World {
   const WorldSettings& settings() const { return settings_; }
   /// The trace of every frame so far (empty unless WorldSettings::trace).
   const std::vector<TraceEvent>& trace() const { return trace_; }
-  /// The collisions of every frame so far: (time, body, other).
-  const std::vector<std::array<double, 3>>& collisionLog() const { return collisionLog_; }
+  /// The collisions of every frame so far, in the order they were resolved.
+  const std::vector<CollisionRecord>& collisionLog() const { return collisionLog_; }
 
  private:
   Scene scene_;
@@ -85,7 +85,7 @@ class World {
   int frame_ = 0;
   int frameCount_ = 0;
   std::vector<TraceEvent> trace_;
-  std::vector<std::array<double, 3>> collisionLog_;
+  std::vector<CollisionRecord> collisionLog_;
   std::map<std::array<int, 4>, Eigen::Vector3d> pairNormals_;
 };
 
