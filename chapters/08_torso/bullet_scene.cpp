@@ -219,8 +219,12 @@ int main(int argc, char** argv) {
       // Bullet combines two bodies' coefficients by multiplying them
       // (btManifoldResult::calculateCombinedRestitution and ...Friction): each body gets the
       // square root of the scene's, so that every pair has the scene's e and mu.
-      info.m_restitution = btScalar(std::sqrt(scene.restitution));
-      info.m_friction = btScalar(std::sqrt(scene.friction));
+      // With a body's own material (the scene file's per-body keys), the products are the
+      // geometric means: ours for friction; ours for restitution is the larger of the two,
+      // which Bullet's product cannot give, so such a scene differs there.
+      const gjkx::BodySpec& spec = scene.bodies[b];
+      info.m_restitution = btScalar(std::sqrt(spec.restitution >= 0 ? spec.restitution : scene.restitution));
+      info.m_friction = btScalar(std::sqrt(spec.friction >= 0 ? spec.friction : scene.friction));
       bb.rigid = std::make_unique<btRigidBody>(info);
       bb.rigid->setUserIndex(int(b));
       if (!body.rigid.isStatic()) {

@@ -85,8 +85,8 @@ TEST_CASE("scene: bad input names the body and the field") {
       {"an infinite coordinate (JSON has no infinity: the number overflows)",
        sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 1e999, 1])"), {"not valid JSON", "1e999"}},
       {"NaN (not JSON)", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, NaN, 1])"), {"not valid JSON"}},
-      {"an unknown body key", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "mass": 3)"),
-       {"body 'ball'", "'mass'", "not a known key"}},
+      {"an unknown body key", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1], "colour": 3)"),
+       {"body 'ball'", "'colour'", "not a known key"}},
       {"an unknown scene key", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])", R"("gravityy": 1,)"),
        {"'gravityy'", "not a known key"}},
       {"an unknown shape", sceneWith(R"("shape": {"cone": 1}, "position": [0, 0, 1])"), {"body 'ball'", "shape.cone"}},
@@ -120,4 +120,25 @@ TEST_CASE("scene: a file that cannot be read is named") {
   } catch (const std::invalid_argument& e) {
     CHECK(std::string(e.what()).find("/nonexistent/scene.json") != std::string::npos);
   }
+}
+
+TEST_CASE("scene: a body's own mass, restitution and friction, and the rule for a pair") {
+  const Scene scene = parseScene(R"({ "duration": 1, "restitution": 0.5, "friction": 0.4,
+      "bodies": [ { "name": "floor", "shape": {"box": [2, 2, 0.5]}, "position": [0, 0, -0.5], "static": true },
+                  { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1], "mass": 2, "restitution": 0.9, "friction": 0.1 },
+                  { "name": "box", "shape": {"box": [0.1, 0.1, 0.1]}, "position": [1, 0, 1] } ] })");
+  CHECK(scene.bodies[1].mass == 2);
+  CHECK(scene.bodies[2].restitution < 0);  // the scene's
+  const auto [e, mu] = materialOf(scene, scene.bodies[0], scene.bodies[1]);
+  CHECK(e == 0.9);                                 // the larger
+  CHECK(mu == Approx(std::sqrt(0.4 * 0.1)));       // the geometric mean
+  const auto [e2, mu2] = materialOf(scene, scene.bodies[0], scene.bodies[2]);
+  CHECK(e2 == 0.5);
+  CHECK(mu2 == 0.4);
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "b", "shape": {"sphere": 1}, "position": [0, 0, 0],
+      "mass": 1, "density": 5 } ] })"), Catch::Contains("'mass'") && Catch::Contains("density"));
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "b", "shape": {"sphere": 1}, "position": [0, 0, 0],
+      "restitution": 1.5 } ] })"), Catch::Contains("'restitution'"));
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "b", "shape": {"sphere": 1}, "position": [0, 0, 0],
+      "mass": -1 } ] })"), Catch::Contains("'mass'"));
 }

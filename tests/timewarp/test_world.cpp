@@ -478,3 +478,24 @@ TEST_CASE("world: fixed steps hold a box dropped on the floor, and the dominoes 
   CHECK(run.maxPenetration < 0.05);
   CHECK(run.tunnelled == 0);
 }
+
+TEST_CASE("world: a body's own mass and restitution are the ones its collisions use") {
+  // A ball of 2 kg (its density follows from its volume) with restitution 0.9 on a floor
+  // of the scene's 0.5: the pair bounces with the larger, 0.9, to 0.81 of its height.
+  const Scene scene = parseScene(R"({ "duration": 1.0, "restitution": 0.5, "friction": 0, "scalar": "double",
+      "bodies": [ { "name": "floor", "shape": {"box": [2, 2, 0.5]}, "position": [0, 0, -0.5], "static": true },
+                  { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 0.6], "mass": 2, "restitution": 0.9 } ] })");
+  World world(scene, checked());
+  CHECK(world.bodies()[1].rigid.massProperties().mass == Approx(2.0).epsilon(1e-12));
+  double apex = 0, lastVz = 0;
+  bool bounced = false;
+  while (!world.done()) {
+    world.step();
+    const BodyState s = world.stateOf(1);
+    if (lastVz < 0 && s.velocity.z() > 0) bounced = true;
+    if (bounced) apex = std::max(apex, s.worldFromBody.translation.z() - 0.1 + s.velocity.z() * s.velocity.z() / (2 * 9.81));
+    lastVz = s.velocity.z();
+  }
+  REQUIRE(bounced);
+  CHECK(apex == Approx(0.5 * 0.81).epsilon(0.03));
+}

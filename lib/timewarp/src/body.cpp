@@ -72,6 +72,13 @@ ConvexDecomposition polygonPieces(const TriangleMesh& mesh) {
   return out;
 }
 
+/// The density of a body spec: its `density`, or its `mass` over its volume (the mass at
+/// density 1, `massAt(1)`).
+template <typename MassAt>
+double densityOf(const BodySpec& spec, MassAt&& massAt) {
+  return spec.mass > 0 ? spec.mass / massAt(1.0) : spec.density;
+}
+
 std::string bodyField(const Scene& scene, const BodySpec& body, std::size_t index, const std::string& field) {
   return scene.source + ": body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
 }
@@ -103,7 +110,9 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const st
         const TriangleMesh& mesh = found->second.first;
         if (!spec.isStatic) {  // a moving mesh needs a volume: it must be closed
           validateMesh(mesh, MeshRequirements{true});
-          mass = polyhedronMassProperties(mesh.vertices, mesh.triangles, spec.density);
+          mass = polyhedronMassProperties(mesh.vertices, mesh.triangles, densityOf(spec, [&](double d) {
+            return polyhedronMassProperties(mesh.vertices, mesh.triangles, d).mass;
+          }));
           centerOfMass = mass.centerOfMass;
           mass.centerOfMass = Eigen::Vector3d::Zero();
         }
@@ -124,7 +133,7 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const st
       try {
         const Shape<double> sceneShape = convexShapeOf<double>(spec.shape, spec.shape.points);
         if (!spec.isStatic) {
-          mass = massProperties(sceneShape, spec.density);
+          mass = massProperties(sceneShape, densityOf(spec, [&](double d) { return massProperties(sceneShape, d).mass; }));
           centerOfMass = mass.centerOfMass;
           mass.centerOfMass = Eigen::Vector3d::Zero();
         }

@@ -11,6 +11,18 @@
 
 namespace gjkx {
 
+namespace {
+
+/// The restitution and friction of bodies i and j (each its own or the scene's; the pair's
+/// by materialOf's rule).
+CollisionMaterial material(const StepContext& step, int i, int j) {
+  const auto [restitution, friction] =
+      materialOf(step.scene, step.scene.bodies[std::size_t(i)], step.scene.bodies[std::size_t(j)]);
+  return CollisionMaterial{restitution, friction};
+}
+
+}  // namespace
+
 void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj) {
   std::vector<WorldBody>& bodies = step.bodies;
   const StepTuning& tuning = step.settings.tuning;
@@ -18,7 +30,7 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   {
     PartTimer timer(step.frame.report.parts.impulses);
     result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
-                              CollisionMaterial{step.scene.restitution, step.scene.friction}, step.impulse);
+                              material(step, hit.i, hit.j), step.impulse);
   }
   FrameCounters& c = step.frame.report.counters;
   ++c.collisions;

@@ -124,7 +124,8 @@ BodySpec parseBody(const Json& value, std::size_t index, const std::string& sour
   body.name = text(value["name"], where, "name");
   if (body.name.empty()) where.fail("name", "must not be empty");
   where.body = "body '" + body.name + "' (bodies[" + std::to_string(index) + "])";
-  rejectUnknownKeys(value, {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "density", "static"},
+  rejectUnknownKeys(value, {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "density", "static",
+                     "mass", "restitution", "friction"},
                     where, "");
   for (const char* required : {"shape", "position"})
     if (!value.contains(required)) where.fail(required, "is missing");
@@ -142,7 +143,15 @@ BodySpec parseBody(const Json& value, std::size_t index, const std::string& sour
   if (value.contains("velocity")) body.velocity = vector3(value["velocity"], where, "velocity");
   if (value.contains("angular_velocity"))
     body.angularVelocity = vector3(value["angular_velocity"], where, "angular_velocity");
+  if (value.contains("density") && value.contains("mass"))
+    where.fail("mass", "and 'density' are both given: a body takes one of the two");
   if (value.contains("density")) body.density = positive(value["density"], where, "density");
+  if (value.contains("mass")) body.mass = positive(value["mass"], where, "mass");
+  if (value.contains("restitution")) {
+    body.restitution = number(value["restitution"], where, "restitution");
+    if (body.restitution < 0 || body.restitution > 1) where.fail("restitution", "must lie in [0, 1]");
+  }
+  if (value.contains("friction")) body.friction = nonNegative(value["friction"], where, "friction");
   if (value.contains("static")) {
     if (!value["static"].is_boolean()) where.fail("static", "must be true or false, got " + value["static"].dump());
     body.isStatic = value["static"].get<bool>();
@@ -224,6 +233,14 @@ Scene loadScene(const std::string& path) {
   const auto slash = path.find_last_of('/');
   scene.folder = slash == std::string::npos ? "." : path.substr(0, slash);
   return scene;
+}
+
+std::pair<double, double> materialOf(const Scene& scene, const BodySpec& a, const BodySpec& b) {
+  const double ea = a.restitution >= 0 ? a.restitution : scene.restitution;
+  const double eb = b.restitution >= 0 ? b.restitution : scene.restitution;
+  const double mua = a.friction >= 0 ? a.friction : scene.friction;
+  const double mub = b.friction >= 0 ? b.friction : scene.friction;
+  return {std::max(ea, eb), mua == mub ? mua : std::sqrt(mua * mub)};
 }
 
 int frameCount(const Scene& scene) {

@@ -93,6 +93,15 @@ struct BodySpec {
   Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();
   /// Density (mass per unit volume).
   double density = 1000;
+  /// Its mass, if the file gives `mass` instead of `density` (exactly one of the two; the
+  /// density is then mass / volume). 0: the density is used.
+  double mass = 0;
+  /// Its coefficient of restitution (`restitution`; -1: the scene's). A pair's is the larger
+  /// of its two bodies' (materialOf).
+  double restitution = -1;
+  /// Its coefficient of friction (`friction`; -1: the scene's). A pair's is the geometric
+  /// mean of its two bodies' (materialOf).
+  double friction = -1;
   /// A static body never moves and is never integrated.
   bool isStatic = false;
 };
@@ -133,6 +142,13 @@ struct Scene {
   /// error found after parsing names it too.
   std::string source = "scene";
 };
+
+/// The restitution and friction of a collision between bodies a and b: each body's own, or
+/// the scene's where it gives none; the pair's restitution is the larger of the two, its
+/// friction the geometric mean, sqrt(mu_a mu_b) (Box2D's and Jolt's mixing rules: a bouncy
+/// ball bounces off anything, and a frictionless body slides on anything). A body that
+/// must bounce less than the scene's default needs the floor's restitution lowered too.
+std::pair<double, double> materialOf(const Scene& scene, const BodySpec& a, const BodySpec& b);
 
 /// The frames of the scene's duration (at least one). Throws std::invalid_argument naming
 /// the scene and the field when duration × frame_rate is more than 10^8 frames (a count
