@@ -5,11 +5,15 @@
 
 #include "../run_program.hpp"
 
+#include <gjkx/timewarp/frame.hpp>
+#include <gjkx/timewarp/scene.hpp>
+
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <map>
 #include <sstream>
 #include <string>
@@ -175,4 +179,58 @@ TEST_CASE("gjkx_simulate refuses a duration whose frames do not fit, naming the 
   CHECK(r.output.find("'duration'") != std::string::npos);
   CHECK(r.output.find("SUMMARY") == std::string::npos);
   fs::remove_all(dir);
+}
+
+TEST_CASE("docs 07 names every key of the scene file, every option, every column and every example scene", "[simulate]") {
+  // The page is read by people writing their own scenes: a key, an option or a column the
+  // code has and the page does not (or an example scene it forgets) fails here.
+  std::ifstream in(std::string(GJKX_DOCS) + "/07_timewarp.md");
+  REQUIRE(in);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string page = buffer.str();
+  const auto named = [&](const std::string& name) { return page.find("`" + name) != std::string::npos; };
+  // The columns of frames.csv, from the one table the writer uses.
+  for (const gjkx::FrameColumn& column : gjkx::frameColumns()) {
+    INFO("frames.csv column " << column.name);
+    CHECK(named(column.name));
+  }
+  // The scene's and a body's keys, as the parser lists them when it refuses an unknown one.
+  for (const std::string& text :
+       {std::string(R"({ "duration": 1, "nokey": 1, "bodies": [] })"),
+        std::string(R"({ "duration": 1, "bodies": [ { "name": "b", "nokey": 1, "shape": {"sphere": 1}, "position": [0, 0, 0] } ] })")}) {
+    std::string message;
+    try {
+      gjkx::parseScene(text, "scene");
+    } catch (const std::invalid_argument& e) {
+      message = e.what();
+    }
+    const auto at = message.find("(known: ");
+    REQUIRE(at != std::string::npos);
+    std::stringstream keys(message.substr(at + 8, message.find(')', at) - at - 8));
+    for (std::string key; std::getline(keys, key, ',');) {
+      key.erase(0, key.find_first_not_of(' '));
+      INFO("scene key " << key);
+      CHECK(named(key));
+    }
+  }
+  // gjkx_simulate's options, as its --help lists them.
+  const Result help = simulate("--help");
+  std::stringstream lines(help.output);
+  int options = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const auto dash = line.find("--");
+    if (dash == std::string::npos || line.find_first_not_of(' ') != dash || line.compare(dash, 6, "--help") == 0) continue;
+    const std::string option = line.substr(dash, line.find_first_of(" ,", dash) - dash);
+    ++options;
+    INFO("option " << option);
+    CHECK(named(option));
+  }
+  CHECK(options >= 15);
+  // The example scenes.
+  for (const auto& entry : fs::directory_iterator(GJKX_SCENES)) {
+    if (entry.path().extension() != ".json") continue;
+    INFO("example scene " << entry.path().filename());
+    CHECK(named(entry.path().filename().string()));
+  }
 }
