@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using namespace gjkx;
@@ -498,4 +500,42 @@ TEST_CASE("world: a body's own mass and restitution are the ones its collisions 
   }
   REQUIRE(bounced);
   CHECK(apex == Approx(0.5 * 0.81).epsilon(0.03));
+}
+
+TEST_CASE("world: a mesh as users have it: scaled, its hull for an open mesh, and an open one to decompose refused at once") {
+  const std::string data = std::string(GJKX_SCENES) + "/../../../tests/mesh/data";
+  const auto bodyWith = [&](const std::string& shape) {
+    Scene scene = parseScene(R"({ "duration": 0.05, "gravity": [0, 0, 0], "bodies": [
+        { "name": "part", "shape": )" + shape + R"(, "position": [0, 0, 0] } ] })", "test.json");
+    scene.folder = data;
+    return scene;
+  };
+  // Scale: the L prism at half its size has an eighth of its mass.
+  const double full = World(bodyWith(R"({"mesh": "l_prism.off"})")).bodies()[0].rigid.massProperties().mass;
+  const double half =
+      World(bodyWith(R"({"mesh": "l_prism.off", "scale": 0.5})")).bodies()[0].rigid.massProperties().mass;
+  CHECK(half == Approx(full / 8).epsilon(1e-9));
+  // An open mesh: a unit cube with its top face missing.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "gjkx-open-mesh";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream off(dir / "open_cube.off");
+    off << "OFF\n8 10 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+        << "3 0 2 1\n3 0 3 2\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+  }
+  Scene open = bodyWith(R"({"mesh": "open_cube.off"})");
+  open.folder = dir.string();
+  CHECK_THROWS_WITH(World(open), Catch::Contains("test.json") && Catch::Contains("shape.mesh") &&
+                                     Catch::Contains("\"collision\": \"hull\""));
+  Scene asHull = bodyWith(R"({"mesh": "open_cube.off", "collision": "hull", "scale": [2, 1, 1]})");
+  asHull.folder = dir.string();
+  const World world(asHull);
+  CHECK(world.bodies()[0].pieces.size() == 1);
+  CHECK(world.bodies()[0].rigid.massProperties().mass == Approx(1000 * 2.0).epsilon(1e-9));  // the hull: 2 x 1 x 1
+  std::filesystem::remove_all(dir);
+  // A bad option is named.
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "m", "shape": {"mesh": "a.off", "collision": "convex"},
+      "position": [0, 0, 0] } ] })"), Catch::Contains("shape.collision"));
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "m", "shape": {"mesh": "a.off", "scale": -1},
+      "position": [0, 0, 0] } ] })"), Catch::Contains("shape.scale"));
 }

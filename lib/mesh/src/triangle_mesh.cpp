@@ -54,7 +54,8 @@ TriangleMesh readMesh(const std::string& path, const MeshRequirements& requireme
   // Triangulate polygons; ValidateDataStructure first, so that a face index past the
   // vertex list is caught before any other step reads through it. No vertex welding by
   // Assimp: we weld across all meshes of the file below, by exact position.
-  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType;
+  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
+                         (requirements.applyNodeTransforms ? unsigned(aiProcess_PreTransformVertices) : 0u);
   std::string log;
   const aiScene* imported = nullptr;
   {

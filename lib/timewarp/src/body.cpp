@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 namespace gjkx {
@@ -86,8 +87,8 @@ std::string bodyField(const Scene& scene, const BodySpec& body, std::size_t inde
 }  // namespace
 
 std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const std::string& meshCache) {
-  // A mesh is read and decomposed once however many bodies use it (the decomposition is
-  // also cached on disk, gjkx/mesh/convex_decomposition.hpp).
+  // A mesh is read and decomposed once however many bodies use it alike (the
+  // decomposition is also cached on disk, gjkx/mesh/convex_decomposition.hpp).
   std::map<std::string, std::pair<TriangleMesh, ConvexDecomposition>> meshes;
   std::vector<WorldBody> bodies;
   for (std::size_t index = 0; index < scene.bodies.size(); ++index) {
@@ -101,15 +102,40 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const st
       const std::string& given = spec.shape.meshPath;
       const std::string path = !given.empty() && given[0] == '/' ? given : scene.folder + "/" + given;
       try {
-        auto found = meshes.find(path);
+        const ShapeSpec& shape = spec.shape;
+        const bool hull = shape.meshCollision == ShapeSpec::MeshCollision::Hull;
+        // A mesh is read and cut once per way it is used (the same file static and moving,
+        // or at another scale, gives other pieces).
+        std::ostringstream key;
+        key << path << '|' << spec.isStatic << '|' << hull << '|' << shape.meshScale.transpose();
+        auto found = meshes.find(key.str());
         if (found == meshes.end()) {
-          TriangleMesh mesh = readMesh(path);
-          ConvexDecomposition pieces = spec.isStatic ? polygonPieces(mesh) : decompose(mesh, {}, meshCache);
-          found = meshes.emplace(path, std::make_pair(std::move(mesh), std::move(pieces))).first;
+          // The file's node transforms applied, then the scene's scale.
+          TriangleMesh mesh = readMesh(path, MeshRequirements{false, true});
+          for (auto& v : mesh.vertices) v = v.cwiseProduct(shape.meshScale);
+          // Checked before any decomposition, which can take seconds: a moving mesh cut into
+          // pieces needs a volume (its mass), so it must be closed.
+          if (!spec.isStatic && !hull) {
+            try {
+              validateMesh(mesh, MeshRequirements{true});
+            } catch (const std::invalid_argument& e) {
+              throw std::invalid_argument(std::string(e.what()) +
+                                          " (a moving mesh to decompose must be closed; \"collision\": \"hull\" "
+                                          "takes any mesh, open or closed, as its convex hull)");
+            }
+          }
+          ConvexDecomposition pieces;
+          if (hull) pieces.pieces = {mesh.vertices};  // one piece: the hull of every vertex
+          else pieces = spec.isStatic ? polygonPieces(mesh) : decompose(mesh, {}, meshCache);
+          found = meshes.emplace(key.str(), std::make_pair(std::move(mesh), std::move(pieces))).first;
         }
         const TriangleMesh& mesh = found->second.first;
-        if (!spec.isStatic) {  // a moving mesh needs a volume: it must be closed
-          validateMesh(mesh, MeshRequirements{true});
+        if (!spec.isStatic && hull) {  // the hull's own volume
+          const Shape<double> hullShape = Polytope<double>::hull(mesh.vertices);
+          mass = massProperties(hullShape, densityOf(spec, [&](double d) { return massProperties(hullShape, d).mass; }));
+          centerOfMass = mass.centerOfMass;
+          mass.centerOfMass = Eigen::Vector3d::Zero();
+        } else if (!spec.isStatic) {  // the closed mesh's volume
           mass = polyhedronMassProperties(mesh.vertices, mesh.triangles, densityOf(spec, [&](double d) {
             return polyhedronMassProperties(mesh.vertices, mesh.triangles, d).mass;
           }));

@@ -81,6 +81,27 @@ std::string text(const Json& value, const Where& where, const std::string& field
 }
 
 ShapeSpec parseShape(const Json& value, const Where& where) {
+  // A mesh takes two options beside its path: {"mesh": "path", "scale": s, "collision": "hull"}.
+  if (value.is_object() && value.contains("mesh") && value.size() > 1) {
+    rejectUnknownKeys(value, {"mesh", "scale", "collision"}, where, "shape.");
+    Json path = Json::object();
+    path["mesh"] = value["mesh"];
+    ShapeSpec shape = parseShape(path, where);
+    if (value.contains("scale")) {
+      const Json& s = value["scale"];
+      if (s.is_number()) shape.meshScale = Eigen::Vector3d::Constant(positive(s, where, "shape.scale"));
+      else if (s.is_array() && s.size() == 3)
+        for (int k = 0; k < 3; ++k) shape.meshScale[k] = positive(s[k], where, "shape.scale[" + std::to_string(k) + "]");
+      else where.fail("shape.scale", "must be a positive number or three, got " + s.dump());
+    }
+    if (value.contains("collision")) {
+      const std::string c = text(value["collision"], where, "shape.collision");
+      if (c == "decompose") shape.meshCollision = ShapeSpec::MeshCollision::Decompose;
+      else if (c == "hull") shape.meshCollision = ShapeSpec::MeshCollision::Hull;
+      else where.fail("shape.collision", "must be \"decompose\" or \"hull\", got \"" + c + "\"");
+    }
+    return shape;
+  }
   if (!value.is_object() || value.size() != 1)
     where.fail("shape", "must be an object with exactly one of box, sphere, capsule, polytope, mesh; got " +
                             value.dump());

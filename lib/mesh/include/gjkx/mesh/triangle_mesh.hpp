@@ -33,6 +33,10 @@ struct MeshRequirements {
   /// A closed surface: every edge is shared by exactly two triangles (needed for a volume,
   /// hence for the volume excess of a decomposition and for mass properties).
   bool closed = false;
+  /// Apply the file's node transforms to its meshes (Assimp's pre-transform: a file whose
+  /// parts are placed, scaled or turned by its scene graph comes in as it is drawn). Off
+  /// by default, so that the project's own figures read their meshes as they always did.
+  bool applyNodeTransforms = false;
 };
 
 /// Reads a triangle mesh from an OBJ, OFF, PLY or STL file (any format Assimp reads).

@@ -75,6 +75,16 @@ struct ShapeSpec {
   std::vector<Eigen::Vector3d> points;
   /// The path of a mesh, relative to the scene file's folder unless absolute.
   std::string meshPath;
+  /// A mesh's scale (`"scale"`: a number, or one per axis), applied to its vertices after
+  /// the file's own node transforms; the scene's units stay metres.
+  Eigen::Vector3d meshScale = Eigen::Vector3d::Ones();
+  /// How a mesh collides (`"collision"`).
+  enum class MeshCollision {
+    Decompose,  ///< `"decompose"` (the default): convex pieces by HACD; a moving mesh must be closed
+    Hull,       ///< `"hull"`: its convex hull, one piece; any mesh, open or closed, or a point cloud
+  };
+  /// How a mesh collides.
+  MeshCollision meshCollision = MeshCollision::Decompose;
 };
 
 /// One body of a scene.
