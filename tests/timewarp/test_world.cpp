@@ -127,7 +127,7 @@ TEST_CASE("world: the impulse tolerances are the settings', and a bad one is ref
   CHECK_THROWS_WITH(World(scene, bad), Catch::Matchers::Contains("settings.impulse.absoluteTolerance"));
 }
 
-// Settling (World::settle): a body with too little kinetic energy to lift its centre of
+// Settling (gjkx::settle, sleep.hpp): a body with too little kinetic energy to lift its centre of
 // mass by one tolerance, struck only by resting bodies in a frame, sleeps at its end. A
 // thin rod dropped 2 mm onto the floor at a slant (it lands on one end and rocks) must end
 // asleep, still, and no deeper than the tolerance band; a box thrown up slowly from 1.5 m
@@ -258,7 +258,7 @@ TEST_CASE("world: Newton's cradle passes the momentum down the row, in order") {
 TEST_CASE("world: a blow passes through a row of touching balls at one instant, in one event") {
   // The balls 1..4 touch (0.05 mm apart, within the tolerance of 0.345 mm); ball 0 strikes
   // the row. The impulses pass the blow down the row at the instant of the strike (the
-  // instant pass of World::resolve): one event, one roll back, four collisions at the
+  // instant pass of gjkx::resolve, response.hpp): one event, one roll back, four collisions at the
   // same time, and ball 4 leaves with ball 0's velocity.
   std::string bodies;
   for (int k = 0; k < 5; ++k)
