@@ -7,6 +7,7 @@
 #include <gjkx/timewarp/response.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <tuple>
 
 namespace gjkx {
@@ -70,21 +71,38 @@ void runFixedStep(StepContext& step, NarrowPhase<S>& narrow, double T0, double T
       const BodyState si = step.bodies[i].path.stateAt(tb), sj = step.bodies[j].path.stateAt(tb);
       Hit hit;
       if (!narrow.touchingAt(step, i, j, tb, si, sj, hit)) continue;
+      std::optional<ContactPatch> deepest;
       if (hit.pointI == hit.pointJ) {
-        // Overlapping: GJK stops at the overlap and gives no closest points, so the contact
-        // is put between the deepest points along the normal, where a discrete engine's
-        // penetration depth puts it (not midway between the centres: a domino on a floor
-        // 1 m thick was pushed 0.3 m below itself, and spun up instead of stopping).
+        // Overlapping: GJK stops at the overlap and gives no closest points, nor a patch
+        // (the patch of a box sunk into a floor is the floor's whole face, and an impulse at
+        // its centre spun a domino up instead of stopping it). The impulse acts where a
+        // discrete engine's penetration depth puts it: at the deepest feature of the smaller
+        // body, halfway back to the other's surface along the normal.
         const Placed<Shape<double>> P{step.bodies[i].pieces[hit.pieceI], si.worldFromBody};
         const Placed<Shape<double>> Q{step.bodies[j].pieces[hit.pieceJ], sj.worldFromBody};
         hit.pointI = P.support(hit.normal);
         hit.pointJ = Q.support(-hit.normal);
+        const double overlap = hit.normal.dot(hit.pointI - hit.pointJ);
+        // The smaller body's deepest feature (its points within the patch depth of its
+        // deepest plane: a face lying flat, an edge, or a corner), moved halfway back.
+        const bool jSmaller = step.bodies[j].radius <= step.bodies[i].radius;
+        const Eigen::Vector3d back = (jSmaller ? 0.5 : -0.5) * overlap * hit.normal;
+        deepest.emplace();
+        deepest->points = jSmaller ? touchingFeature(step.bodies[j].pieces[hit.pieceJ], sj.worldFromBody, -hit.normal,
+                                                     step.band(step.settings.tuning.patchDepth))
+                                   : touchingFeature(step.bodies[i].pieces[hit.pieceI], si.worldFromBody, hit.normal,
+                                                     step.band(step.settings.tuning.patchDepth));
+        for (auto& p : deepest->points) {
+          p += back;
+          deepest->centre += p / double(deepest->points.size());
+        }
       }
-      if (approachAt(step, hit, si, sj) < 0) {
+      const double vn = deepest ? approachOn(step, hit, *deepest, si, sj) : approachAt(step, hit, si, sj);
+      if (vn < 0) {
         ++c.events;
         // One impulse per pair and step, as a discrete engine's single pass over its
         // contacts; no instant pass (the baseline stays the simple one).
-        resolve(step, hit, false);  // flies both bodies on from tb
+        resolve(step, hit, false, deepest ? &*deepest : nullptr);  // flies both bodies on from tb
         if (step.abandoned()) return;
       }
       // What the step let the pair sink into each other is undone by moving them apart

@@ -78,7 +78,7 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   }
 }
 
-std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass) {
+std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, const ContactPatch* patch) {
   std::vector<WorldBody>& bodies = step.bodies;
   const StepTuning& tuning = step.settings.tuning;
   // Roll back: the bodies' states at the time of impact t_c.
@@ -134,7 +134,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass) {
   inPass(hit.i);
   inPass(hit.j);  // (in this order: the bodies fly on in the order seen)
   touched(step, hit.i, hit.pieceI, hit.j, hit.pieceJ);
-  links.push_back({hit, true, std::nullopt, true});
+  links.push_back({hit, true, patch ? std::optional<ContactPatch>(*patch) : std::nullopt, true});
   linkIndex.emplace(step.piecePairKey(hit.i, hit.pieceI, hit.j, hit.pieceJ), 0);
   std::deque<std::size_t> closing{0};
   for (int impulses = 0; !closing.empty() && impulses < tuning.instantImpulses;) {

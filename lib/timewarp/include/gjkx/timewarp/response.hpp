@@ -21,6 +21,7 @@
 ///   within the tolerance this frame), and each struck body is checked once, after the last link.
 #pragma once
 
+#include <gjkx/timewarp/contact.hpp>
 #include <gjkx/timewarp/step.hpp>
 
 #include <vector>
@@ -33,7 +34,10 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
 
 /// A collision at t_c: its impulse, then (with `instantPass`) the impulses it sets off at
 /// the same instant; the bodies struck fly on from t_c to the interval's end. Returns the
-/// bodies flown on (empty, with the frame abandoned, on a spin overflow).
-std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass = true);
+/// bodies flown on (empty, with the frame abandoned, on a spin overflow). `patch`, when
+/// given, is where the hit's impulse acts, instead of the patch of its closest points
+/// (fixed steps give it for a pair found overlapping, whose closest points say nothing).
+std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass = true,
+                         const ContactPatch* patch = nullptr);
 
 }  // namespace gjkx
