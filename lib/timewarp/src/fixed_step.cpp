@@ -78,11 +78,8 @@ void runFixedStep(StepContext& step, NarrowPhase<S>& narrow, double T0, double T
         // its centre spun a domino up instead of stopping it). The impulse acts where a
         // discrete engine's penetration depth puts it: at the deepest feature of the smaller
         // body, halfway back to the other's surface along the normal.
-        const Placed<Shape<double>> P{step.bodies[i].pieces[hit.pieceI], si.worldFromBody};
-        const Placed<Shape<double>> Q{step.bodies[j].pieces[hit.pieceJ], sj.worldFromBody};
-        hit.pointI = P.support(hit.normal);
-        hit.pointJ = Q.support(-hit.normal);
-        const double overlap = hit.normal.dot(hit.pointI - hit.pointJ);
+        const double overlap = overlapAlong(step.bodies[i].pieces[hit.pieceI], si.worldFromBody,
+                                            step.bodies[j].pieces[hit.pieceJ], sj.worldFromBody, hit.normal);
         // The smaller body's deepest feature (its points within the patch depth of its
         // deepest plane: a face lying flat, an edge, or a corner), moved halfway back.
         const bool jSmaller = step.bodies[j].radius <= step.bodies[i].radius;

@@ -30,10 +30,10 @@ const WorldSettings& validated(const WorldSettings& settings) {
 }
 
 /// The narrow phase of the scene's scalar: the one place the scalar is tested.
-std::variant<NarrowPhase<float>, NarrowPhase<double>> narrowPhaseOf(CollisionScalar scalar,
-                                                                    const std::vector<WorldBody>& bodies) {
-  if (scalar == CollisionScalar::Float) return std::variant<NarrowPhase<float>, NarrowPhase<double>>(std::in_place_index<0>, bodies);
-  return std::variant<NarrowPhase<float>, NarrowPhase<double>>(std::in_place_index<1>, bodies);
+template <typename AnyNarrowPhase>
+AnyNarrowPhase narrowPhaseOf(CollisionScalar scalar, const std::vector<WorldBody>& bodies) {
+  if (scalar == CollisionScalar::Float) return AnyNarrowPhase(std::in_place_index<0>, bodies);
+  return AnyNarrowPhase(std::in_place_index<1>, bodies);
 }
 
 }  // namespace
@@ -44,7 +44,7 @@ World::World(const Scene& scene, const WorldSettings& settings)
       impulse_(settings.impulse),
       bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate,
                           settings.meshCache.value_or(defaultDecompositionCacheDir()))),
-      narrow_(narrowPhaseOf(scene.run.scalar, bodies_)),
+      narrow_(narrowPhaseOf<AnyNarrowPhase>(scene.run.scalar, bodies_)),
       frameCount_(gjkx::frameCount(scene)) {
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);
   // The independent checks' own view of every body (gjkx/verify), made once: they measure

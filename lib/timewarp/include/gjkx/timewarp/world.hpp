@@ -79,7 +79,9 @@ class World {
   WorldSettings settings_;
   ImpulseSettings impulse_;  // settings_.impulse with the scene's microcollision speed
   std::vector<WorldBody> bodies_;
-  std::variant<NarrowPhase<float>, NarrowPhase<double>> narrow_;
+  /// The narrow phase of the scene's scalar, chosen when the world is built.
+  using AnyNarrowPhase = std::variant<NarrowPhase<float>, NarrowPhase<double>>;
+  AnyNarrowPhase narrow_;
   /// The independent checks, prepared once (they also measure the start).
   std::unique_ptr<FrameVerifier> verifier_;
   int frame_ = 0;
