@@ -9,6 +9,11 @@
 
 #include <cstdlib>
 
+#include <gjkx/support_mapping/convex_hull.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -146,4 +151,89 @@ TEST_CASE("Wuson (assimp-testmodels): a nonconvex mesh cut into pieces that cove
   }
   CHECK(total >= static_cast<int>(mesh.vertices.size()) / 4);
   checkCovers(mesh, d);
+}
+
+namespace {
+// A closed UV sphere of `rings` x `segments` quads (poles fanned): enough triangles that
+// HACD's first phase alone (every triangle's ray against every other) takes a while.
+TriangleMesh uvSphere(int rings, int segments) {
+  TriangleMesh m;
+  m.source = "uv-sphere";
+  const double pi = 3.14159265358979323846;
+  m.vertices.push_back({0, 0, 1});
+  for (int r = 1; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const double theta = pi * r / rings, phi = 2 * pi * s / segments;
+      m.vertices.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+    }
+  m.vertices.push_back({0, 0, -1});
+  const int south = int(m.vertices.size()) - 1;
+  const auto at = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };
+  for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
+  for (int r = 1; r + 1 < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
+      m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+    }
+  for (int s = 0; s < segments; ++s) m.triangles.push_back({south, at(rings - 1, s + 1), at(rings - 1, s)});
+  return m;
+}
+}  // namespace
+
+TEST_CASE("a decomposition past its budget stops and falls back to the mesh's hull, and says how far it came", "[mesh]") {
+  const TriangleMesh mesh = uvSphere(48, 64);  // 6,016 triangles: HACD needs seconds, the budget is 0.2 s
+  REQUIRE_NOTHROW(validateMesh(mesh, MeshRequirements{true}));
+  DecompositionSettings settings;
+  settings.budgetSeconds = 0.2;
+  int calls = 0;
+  double lastSeconds = 0;
+  const std::string cache = freshCacheDir("budget");
+  const auto start = std::chrono::steady_clock::now();
+  const ConvexDecomposition d = decompose(mesh, settings, cache, [&](const DecompositionProgress& p) {
+    ++calls;
+    lastSeconds = p.seconds;
+    CHECK(p.budgetSeconds == 0.2);
+    CHECK(p.fraction >= 0);
+    CHECK(p.fraction <= 1);
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(d.report.fellBack);
+  CHECK_THAT(d.report.fallbackReason, Catch::Contains("budget of 0.2 s"));
+  // One piece, the hull of every vertex, and every triangle in it.
+  REQUIRE(d.pieces.size() == 1);
+  CHECK(d.report.pieces == 1);
+  CHECK(d.pieces[0].size() == convexHull3d(mesh.vertices, "mesh").vertices.size());
+  CHECK(std::abs(hullVolume(d.pieces[0]) - hullVolume(mesh.vertices)) < 1e-12);
+  CHECK(std::count(d.pieceOfTriangle.begin(), d.pieceOfTriangle.end(), 0) == long(mesh.triangles.size()));
+  // About the budget, not far more: at least the budget, and far less than HACD's seconds
+  // (a generous bound, not a speed test: the machine may be loaded).
+  CHECK(d.report.seconds >= 0.2);
+  CHECK(wall < 10);
+  CHECK(calls >= 1);
+  CHECK(lastSeconds <= d.report.seconds);
+  CHECK_THAT(describe(d.report, "uv-sphere"), Catch::Contains("not decomposed") && Catch::Contains("one piece"));
+
+  // Remembered: the same budget falls back at once, from the cache; a larger one tries again.
+  const ConvexDecomposition again = decompose(mesh, settings, cache);
+  CHECK(again.report.fellBack);
+  CHECK(again.report.fromCache);
+  CHECK_THAT(describe(again.report, "uv-sphere"), Catch::Contains("(cached)"));
+  settings.budgetSeconds = 0.3;
+  const ConvexDecomposition larger = decompose(mesh, settings, cache);
+  CHECK(larger.report.fellBack);
+  CHECK_FALSE(larger.report.fromCache);
+}
+
+TEST_CASE("a decomposition within its budget is reported: pieces, vertices per piece, volume excess, time", "[mesh]") {
+  const TriangleMesh mesh = readMesh(kData + "/l_prism.off");
+  const ConvexDecomposition d = decompose(mesh, {}, "");
+  CHECK_FALSE(d.report.fellBack);
+  CHECK(d.report.fallbackReason.empty());
+  const std::string line = describe(d.report, "l_prism.off");
+  CHECK_THAT(line, Catch::StartsWith("l_prism.off: " + std::to_string(d.report.pieces) + " convex pieces") &&
+                       Catch::Contains("vertices per piece") && Catch::Contains("volume excess") &&
+                       Catch::EndsWith(" s"));
+  DecompositionSettings bad;
+  bad.budgetSeconds = 0;
+  CHECK_THROWS_WITH(decompose(mesh, bad, ""), Catch::Contains("decomposition.budgetSeconds"));
 }

@@ -9,12 +9,19 @@
 /// piece of a cluster is the convex hull of its triangles' vertices, built by Qhull
 /// (`convexHull3d`), so every piece is exactly the hull of surface points and the pieces
 /// together cover the surface. Each piece becomes a `Polytope` with hill climbing.
+///
+/// HACD cannot be stopped from inside (its call-back's answer is ignored, and its merging
+/// loop never looks at a clock; a sphere of 134 vertices has kept it busy for minutes), so it
+/// runs in a forked worker (forked_worker.hpp) with a budget of wall time. When the budget
+/// runs out, or the worker fails, the mesh's convex hull is its one piece, and standard error
+/// says so, naming the mesh and the time spent.
 #pragma once
 
 #include <gjkx/mesh/triangle_mesh.hpp>
 #include <gjkx/support_mapping/polytope.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,6 +47,10 @@ struct DecompositionSettings {
   bool addExtraDistPoints = true;
   /// Also measure concavity at face centres (`SetAddFacesPoints`).
   bool addFacesPoints = true;
+  /// Seconds of wall time HACD may take; after them it is stopped and the mesh's convex hull
+  /// is its one piece (`DecompositionReport::fellBack`). Not part of the cache key: a budget
+  /// does not change the pieces of a decomposition that finishes within it.
+  double budgetSeconds = 30.0;
   /// Throws std::invalid_argument naming the field for a value out of range.
   void validate() const;
 };
@@ -64,9 +75,37 @@ struct DecompositionReport {
   bool fromCache = false;
   /// The cache file (empty when caching was off).
   std::string cacheFile;
-  /// Seconds HACD took (0 when read from the cache).
+  /// Seconds HACD took (0 when read from the cache); with a fallback, the seconds spent before it.
   double seconds = 0;
+  /// True when the decomposition did not finish (its budget ran out, or HACD failed) and the
+  /// mesh's convex hull is its one piece instead.
+  bool fellBack = false;
+  /// Why it fell back ("the budget of 30 s ran out", "HACD died of signal 11 (...)"); empty otherwise.
+  std::string fallbackReason;
 };
+
+/// One line that tells a user what became of a mesh: its pieces, the vertices per piece
+/// (fewest, mean, most), the volume excess and the time, or "(cached)", or the fallback and
+/// why; `name` names the mesh (its file).
+std::string describe(const DecompositionReport& report, const std::string& name);
+
+/// How far a running decomposition has come, for a progress bar.
+struct DecompositionProgress {
+  /// What HACD is doing: "graph" (the dual graph of the triangles and their concavity
+  /// points), "costs" (the cost of every possible merge), "merging" (the merges), "hulls".
+  const char* phase = "";
+  /// How much of that phase is done, 0 to 1 (merging: the share of triangles merged away,
+  /// which stops short of 1 when the concavity bound is met first; costs: 0, unknown).
+  double fraction = 0;
+  /// Seconds since the decomposition started.
+  double seconds = 0;
+  /// Its budget in seconds (DecompositionSettings::budgetSeconds).
+  double budgetSeconds = 0;
+};
+
+/// Called about ten times a second while HACD runs (in the calling process; HACD runs in a
+/// worker), for a progress bar.
+using DecompositionObserver = std::function<void(const DecompositionProgress&)>;
 
 /// The convex pieces of a mesh: for each, the vertices of its convex hull (in the mesh's
 /// frame, double precision), with the report.
@@ -106,13 +145,18 @@ std::uint64_t decompositionKey(const TriangleMesh& mesh, const DecompositionSett
 /// Decomposes `mesh` into convex pieces with HACD, or reads the pieces from
 /// `cacheDir/<key>.pieces` when an earlier run computed them (an empty `cacheDir` turns
 /// caching off; a folder that cannot be made or written degrades to no cache, with one
-/// warning on standard error per process). The mesh is validated first (`validateMesh`; real meshes often have holes,
+/// warning on standard error per process). HACD runs in a forked worker for at most
+/// `settings.budgetSeconds`, calling `observer` as it goes; a decomposition that does not
+/// finish falls back to the mesh's convex hull (one piece, every triangle in it), says so on
+/// standard error, and is remembered in `cacheDir/<key>.fallback` with its budget, so that
+/// a later run with no larger a budget falls back at once. The mesh is validated first (`validateMesh`; real meshes often have holes,
 /// so closure is not required, but the report says whether the mesh is closed):
 /// std::invalid_argument names the mesh's source and the fault. A cluster whose
 /// vertices lie in one plane (no volume) is thickened by \f$10^{-6}\f$ of the mesh's
 /// diagonal along its normal so that it still has a hull.
 ConvexDecomposition decompose(const TriangleMesh& mesh, const DecompositionSettings& settings = {},
-                              const std::string& cacheDir = defaultDecompositionCacheDir());
+                              const std::string& cacheDir = defaultDecompositionCacheDir(),
+                              const DecompositionObserver& observer = {});
 
 /// The volume of a convex hull given by its vertices (Qhull hull, divergence theorem).
 double hullVolume(const std::vector<Eigen::Vector3d>& points);

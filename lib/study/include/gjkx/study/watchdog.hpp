@@ -8,18 +8,14 @@
 /// buffers: an answer crosses a pipe from the child, so it is a plain struct). POSIX only.
 #pragma once
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include <gjkx/mesh/forked_worker.hpp>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
-#include <thread>
+#include <string_view>
 #include <type_traits>
 
 namespace gjkx::study {
@@ -46,67 +42,37 @@ struct GuardedRun {
 };
 
 /// Runs `f()` (returning a trivially copyable Answer) in a fork()ed child, with `limit`
-/// seconds of wall time: a child that runs longer is killed (a hang), one that dies of a
-/// signal crashed. An exception is caught in the child and sent back as an answer of kind
-/// `AnswerKind::Exception` with its what() in `message`. `Answer` needs the members
-/// `AnswerKind kind` and `char message[N]`.
+/// seconds of wall time (gjkx::runForked, the mesh stage's forked worker): a child that runs
+/// longer is killed (a hang), one that dies of a signal crashed. An exception is caught in
+/// the child and sent back as an answer of kind `AnswerKind::Exception` with its what() in
+/// `message`. `Answer` needs the members `AnswerKind kind` and `char message[N]`.
 template <typename Answer, typename F>
 GuardedRun guarded(F&& f, double limit, Answer& answer) {
   static_assert(std::is_trivially_copyable_v<Answer>, "the answer crosses a pipe");
+  std::string bytes;
+  const WorkerEnd end = runForked(
+      [&](int fd) {
+        Answer a{};
+        try {
+          a = f();
+        } catch (const std::exception& e) {
+          a = Answer{};
+          a.kind = AnswerKind::Exception;
+          setText(a.message, sizeof a.message, e.what());
+        } catch (...) {
+          a = Answer{};
+          a.kind = AnswerKind::Exception;
+          setText(a.message, sizeof a.message, "unknown exception");
+        }
+        return writeAll(fd, &a, sizeof a) ? 0 : 3;
+      },
+      limit, [&](std::string_view chunk) { bytes.append(chunk); });
   GuardedRun run;
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("watchdog: pipe() failed");
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("watchdog: fork() failed");
-  if (pid == 0) {
-    close(fds[0]);
-    // The default actions, whatever handlers the caller installed (a test framework's, say):
-    // a fault kills the child, and the parent reads the signal.
-    for (const int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGTERM, SIGINT, SIGALRM}) std::signal(sig, SIG_DFL);
-    alarm(unsigned(std::ceil(limit)) + 2);  // a second watchdog, should the parent's fail
-    Answer a{};
-    try {
-      a = f();
-    } catch (const std::exception& e) {
-      a = Answer{};
-      a.kind = AnswerKind::Exception;
-      setText(a.message, sizeof a.message, e.what());
-    } catch (...) {
-      a = Answer{};
-      a.kind = AnswerKind::Exception;
-      setText(a.message, sizeof a.message, "unknown exception");
-    }
-    const ssize_t written = write(fds[1], &a, sizeof a);
-    _exit(written == ssize_t(sizeof a) ? 0 : 3);
-  }
-  close(fds[1]);
-  int status = 0;
-  auto pause = std::chrono::microseconds(20);
-  for (;;) {
-    const pid_t r = waitpid(pid, &status, WNOHANG);
-    if (r == pid) break;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      run.timedOut = true;
-      break;
-    }
-    std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(2000));
-  }
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!run.timedOut) {
-    if (WIFSIGNALED(status)) {
-      run.signal = WTERMSIG(status);
-      if (run.signal == SIGALRM) run.timedOut = true;
-    } else if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-      run.finished = read(fds[0], &answer, sizeof answer) == ssize_t(sizeof answer);
-    }
-  }
-  close(fds[0]);
+  run.timedOut = end.timedOut;
+  run.signal = end.timedOut ? 0 : end.signal;
+  run.seconds = end.seconds;
+  run.finished = end.exited && end.exitCode == 0 && bytes.size() == sizeof answer;
+  if (run.finished) std::memcpy(&answer, bytes.data(), sizeof answer);
   return run;
 }
 
