@@ -4,7 +4,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 using namespace gjkx;
 
@@ -141,4 +144,68 @@ TEST_CASE("scene: a body's own mass, restitution and friction, and the rule for 
       "restitution": 1.5 } ] })"), Catch::Contains("'restitution'"));
   CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "b", "shape": {"sphere": 1}, "position": [0, 0, 0],
       "mass": -1 } ] })"), Catch::Contains("'mass'"));
+}
+
+TEST_CASE("scene: a mesh's decomposition settings are read, and a bad one is named") {
+  const auto shapeOf = [](const std::string& shape) {
+    return parseScene(R"({ "duration": 1, "bodies": [ { "name": "m", "shape": )" + shape +
+                          R"(, "position": [0, 0, 0] } ] })",
+                      "test.json")
+        .bodies[0]
+        .shape;
+  };
+  const ShapeSpec plain = shapeOf(R"({"mesh": "a.off"})");
+  CHECK(plain.decomposition.budgetSeconds == 30);
+  const ShapeSpec s = shapeOf(R"({"mesh": "a.off", "decomposition": {"budget_s": 2.5, "concavity": 20, "min_pieces": 3,
+      "compacity_weight": 0.2, "volume_weight": 0.5, "extra_points": false, "face_points": false}})");
+  CHECK(s.decomposition.budgetSeconds == 2.5);
+  CHECK(s.decomposition.concavity == 20);
+  CHECK(s.decomposition.minClusters == 3);
+  CHECK(s.decomposition.compacityWeight == 0.2);
+  CHECK(s.decomposition.volumeWeight == 0.5);
+  CHECK_FALSE(s.decomposition.addExtraDistPoints);
+  CHECK_FALSE(s.decomposition.addFacesPoints);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"({"budget_s": 0})", "shape.decomposition.budget_s"},
+      {R"({"budget_s": "long"})", "shape.decomposition.budget_s"},
+      {R"({"concavity": -1})", "shape.decomposition.concavity"},
+      {R"({"min_pieces": 0})", "shape.decomposition.min_pieces"},
+      {R"({"min_pieces": 2.5})", "shape.decomposition.min_pieces"},
+      {R"({"volume_weight": -1})", "shape.decomposition.volume_weight"},
+      {R"({"extra_points": 1})", "shape.decomposition.extra_points"},
+      {R"({"pieces": 4})", "shape.decomposition.pieces"},
+      {R"(30)", "shape.decomposition"},
+  };
+  for (const auto& [value, field] : bad) {
+    INFO(value);
+    CHECK_THROWS_WITH(shapeOf(R"({"mesh": "a.off", "decomposition": )" + value + "}"),
+                      Catch::Contains("test.json") && Catch::Contains("body 'm'") && Catch::Contains("'" + field + "'"));
+  }
+}
+
+TEST_CASE("scene: a decomposed mesh is reported once, and a budget given to buildBodies is the one it gets") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "gjkx-scene-report";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream off(dir / "cube.off");
+    off << "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+        << "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+  }
+  Scene scene = parseScene(R"({ "duration": 0.05, "gravity": [0, 0, 0], "bodies": [
+      { "name": "a", "shape": {"mesh": "cube.off"}, "position": [0, 0, 0] },
+      { "name": "b", "shape": {"mesh": "cube.off"}, "position": [3, 0, 0] } ] })",
+                           "test.json");
+  scene.folder = dir.string();
+  std::vector<std::string> lines;
+  MeshBuildOptions options;
+  options.cache = "";
+  options.report = [&](const std::string& line) { lines.push_back(line); };
+  const std::vector<WorldBody> bodies = buildBodies(scene, 0.05, options);
+  REQUIRE(lines.size() == 1);  // two bodies, one mesh used one way: one decomposition, one report
+  CHECK_THAT(lines[0], Catch::StartsWith("cube.off: 1 convex piece,") && Catch::Contains("volume excess"));
+  CHECK(bodies[0].pieces.size() == 1);
+  // A budget of its own overrides the mesh's, and a bad one is refused by name (0: each mesh's own).
+  options.budgetSeconds = -1;
+  CHECK_THROWS_WITH(buildBodies(scene, 0.05, options), Catch::Contains("budgetSeconds"));
+  std::filesystem::remove_all(dir);
 }

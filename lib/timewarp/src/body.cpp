@@ -6,6 +6,7 @@
 #include <gjkx/mesh/triangle_mesh.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -80,6 +81,20 @@ double densityOf(const BodySpec& spec, MassAt&& massAt) {
   return spec.mass > 0 ? spec.mass / massAt(1.0) : spec.density;
 }
 
+/// A moving mesh's decomposition within its budget (the options' over the scene's), its
+/// progress handed on and its report said once (a mesh is decomposed once per way it is used).
+ConvexDecomposition decomposeReported(const TriangleMesh& mesh, DecompositionSettings settings, const std::string& name,
+                                      const MeshBuildOptions& options) {
+  if (options.budgetSeconds != 0) settings.budgetSeconds = options.budgetSeconds;  // a bad one is refused by name
+  DecompositionObserver observer;
+  if (options.progress) observer = [&](const DecompositionProgress& p) { options.progress(name, p); };
+  ConvexDecomposition d = decompose(mesh, settings, options.cache, observer);
+  const std::string line = describe(d.report, name);
+  if (options.report) options.report(line);
+  else std::fprintf(stderr, "gjkx: %s\n", line.c_str());
+  return d;
+}
+
 std::string bodyField(const Scene& scene, const BodySpec& body, std::size_t index, const std::string& field) {
   return scene.source + ": body '" + body.name + "' (bodies[" + std::to_string(index) + "]): field '" + field + "'";
 }
@@ -87,6 +102,12 @@ std::string bodyField(const Scene& scene, const BodySpec& body, std::size_t inde
 }  // namespace
 
 std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const std::string& meshCache) {
+  MeshBuildOptions meshes;
+  meshes.cache = meshCache;
+  return buildBodies(scene, duration, meshes);
+}
+
+std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const MeshBuildOptions& options) {
   // A mesh is read and decomposed once however many bodies use it alike (the
   // decomposition is also cached on disk, gjkx/mesh/convex_decomposition.hpp).
   std::map<std::string, std::pair<TriangleMesh, ConvexDecomposition>> meshes;
@@ -126,7 +147,8 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const st
           }
           ConvexDecomposition pieces;
           if (hull) pieces.pieces = {mesh.vertices};  // one piece: the hull of every vertex
-          else pieces = spec.isStatic ? polygonPieces(mesh) : decompose(mesh, {}, meshCache);
+          else if (spec.isStatic) pieces = polygonPieces(mesh);
+          else pieces = decomposeReported(mesh, shape.decomposition, given, options);
           found = meshes.emplace(key.str(), std::make_pair(std::move(mesh), std::move(pieces))).first;
         }
         const TriangleMesh& mesh = found->second.first;

@@ -80,10 +80,39 @@ std::string text(const Json& value, const Where& where, const std::string& field
   return value.get<std::string>();
 }
 
+// A mesh's "decomposition": HACD's settings that matter and the budget, each checked by name.
+DecompositionSettings parseDecomposition(const Json& value, const Where& where) {
+  const std::string field = "shape.decomposition";
+  if (!value.is_object()) where.fail(field, "must be an object, got " + value.dump());
+  rejectUnknownKeys(value,
+                    {"budget_s", "concavity", "min_pieces", "compacity_weight", "volume_weight", "extra_points",
+                     "face_points"},
+                    where, field + ".");
+  DecompositionSettings d;
+  if (value.contains("budget_s")) d.budgetSeconds = positive(value["budget_s"], where, field + ".budget_s");
+  if (value.contains("concavity")) d.concavity = positive(value["concavity"], where, field + ".concavity");
+  if (value.contains("min_pieces")) {
+    const Json& n = value["min_pieces"];
+    if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 100000)
+      where.fail(field + ".min_pieces", "must be an integer from 1 to 100000, got " + n.dump());
+    d.minClusters = n.get<int>();
+  }
+  if (value.contains("compacity_weight"))
+    d.compacityWeight = nonNegative(value["compacity_weight"], where, field + ".compacity_weight");
+  if (value.contains("volume_weight")) d.volumeWeight = nonNegative(value["volume_weight"], where, field + ".volume_weight");
+  for (const char* flag : {"extra_points", "face_points"}) {
+    if (!value.contains(flag)) continue;
+    if (!value[flag].is_boolean()) where.fail(field + "." + flag, "must be true or false, got " + value[flag].dump());
+    (std::string(flag) == "extra_points" ? d.addExtraDistPoints : d.addFacesPoints) = value[flag].get<bool>();
+  }
+  return d;
+}
+
 ShapeSpec parseShape(const Json& value, const Where& where) {
-  // A mesh takes two options beside its path: {"mesh": "path", "scale": s, "collision": "hull"}.
+  // A mesh takes options beside its path:
+  // {"mesh": "path", "scale": s, "collision": "hull", "decomposition": {"budget_s": 10, ...}}.
   if (value.is_object() && value.contains("mesh") && value.size() > 1) {
-    rejectUnknownKeys(value, {"mesh", "scale", "collision"}, where, "shape.");
+    rejectUnknownKeys(value, {"mesh", "scale", "collision", "decomposition"}, where, "shape.");
     Json path = Json::object();
     path["mesh"] = value["mesh"];
     ShapeSpec shape = parseShape(path, where);
@@ -100,6 +129,7 @@ ShapeSpec parseShape(const Json& value, const Where& where) {
       else if (c == "hull") shape.meshCollision = ShapeSpec::MeshCollision::Hull;
       else where.fail("shape.collision", "must be \"decompose\" or \"hull\", got \"" + c + "\"");
     }
+    if (value.contains("decomposition")) shape.decomposition = parseDecomposition(value["decomposition"], where);
     return shape;
   }
   if (!value.is_object() || value.size() != 1)

@@ -23,6 +23,7 @@
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/verify/frame_verifier.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,9 +70,15 @@ struct WorldBody {
   /// How long (simulated s) it has been too slow to leave the tolerance band and struck by
   /// nothing but resting or slow bodies (sleep.hpp); it settles after StepTuning::settleSeconds.
   double slowFor = 0;
-  /// The gravity its path feels: none while it sleeps.
+  /// Its path over the current interval is the contact solver's (the hybrid model,
+  /// contact_solver.hpp): gravity's impulse is already in its velocity, and it flies with
+  /// gravity off to the interval's end, after a collision too.
+  bool contactFlight = false;
+  /// The contact group it fell asleep with (the hybrid model; -1: none): the group wakes as one.
+  int sleepGroup = -1;
+  /// The gravity its path feels: none while it sleeps, or flies on the contact solver's path.
   Eigen::Vector3d gravity(const Eigen::Vector3d& sceneGravity) const {
-    return asleep ? Eigen::Vector3d::Zero() : sceneGravity;
+    return asleep || contactFlight ? Eigen::Vector3d::Zero() : sceneGravity;
   }
   /// A body that cannot move of its own accord: static, or asleep.
   bool resting() const { return asleep || rigid.isStatic(); }
@@ -82,12 +89,33 @@ struct WorldBody {
   }
 };
 
+/// What buildBodies does with a mesh to decompose beyond what the scene says: where the
+/// decompositions are cached, a budget over the scene's, and what the terminal is told.
+struct MeshBuildOptions {
+  /// The decomposition cache's folder (empty: no cache; gjkx/mesh/convex_decomposition.hpp).
+  std::string cache = defaultDecompositionCacheDir();
+  /// Seconds every decomposition may take, over each mesh's own (its scene key
+  /// `decomposition.budget_s`; gjkx_simulate's --decompose-budget); 0: each mesh's own.
+  double budgetSeconds = 0;
+  /// Called about ten times a second while a mesh is decomposed, with the mesh's file (a
+  /// progress bar); unset: nothing.
+  std::function<void(const std::string& mesh, const DecompositionProgress&)> progress;
+  /// Where the one-line report of each decomposed mesh goes (gjkx::describe: pieces,
+  /// vertices per piece, volume excess, time or "cached"), once per mesh; unset: standard error.
+  std::function<void(const std::string& line)> report;
+};
+
 /// The bodies of `scene`: each shape read (a mesh through Assimp, decomposed once however
 /// many bodies use it), its mass properties, its frame moved to the centre of mass, and its
 /// start state flown for no time (a static body: over the whole `duration`, since it is
-/// never integrated again). Decompositions are cached in `meshCache` (empty: no cache;
-/// gjkx/mesh/convex_decomposition.hpp). Throws std::invalid_argument naming the scene's
-/// file, the body and the field.
+/// never integrated again). A moving mesh to decompose is decomposed with its scene's
+/// settings (ShapeSpec::decomposition) within its budget (else its hull, said on standard
+/// error) and reported once (MeshBuildOptions). Throws std::invalid_argument naming the
+/// scene's file, the body and the field.
+std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const MeshBuildOptions& meshes);
+
+/// buildBodies with the decompositions cached in `meshCache` (empty: no cache) and reported
+/// on standard error.
 std::vector<WorldBody> buildBodies(const Scene& scene, double duration,
                                    const std::string& meshCache = defaultDecompositionCacheDir());
 

@@ -23,11 +23,13 @@
 /// the `fixed_step` ordering. A shape is one of `{"box": [hx, hy, hz]}` (half extents),
 /// `{"sphere": r}`, `{"capsule": [r, half_length]}` (axis along the body's z),
 /// `{"polytope": [[x, y, z], ...]}` (the convex hull of the points, in the body's frame),
-/// `{"mesh": "path"}`. Bad input is rejected where it enters, with a message that names
+/// `{"mesh": "path"}` (or `{"mesh": "path", "scale": s, "collision": "decompose" | "hull",
+/// "decomposition": {"budget_s": 30, ...}}`). Bad input is rejected where it enters, with a message that names
 /// the body and the field: a missing field, an unknown key, a wrong type, NaN or
 /// infinity, a negative radius or extent, a zero quaternion.
 #pragma once
 
+#include <gjkx/mesh/convex_decomposition.hpp>
 #include <gjkx/motion/vector.hpp>
 
 #include <Eigen/Geometry>
@@ -85,6 +87,10 @@ struct ShapeSpec {
   };
   /// How a mesh collides.
   MeshCollision meshCollision = MeshCollision::Decompose;
+  /// How a moving mesh is decomposed (`"decomposition"`: `budget_s`, `concavity`,
+  /// `min_pieces`, `compacity_weight`, `volume_weight`, `extra_points`, `face_points`; HACD's
+  /// defaults and a budget of 30 s where it gives none).
+  DecompositionSettings decomposition;
 };
 
 /// One body of a scene.
