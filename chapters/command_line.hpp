@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -28,13 +29,34 @@ inline void parseOrExit(CLI::App& app, int argc, char** argv) {
   }
 }
 
+/// A progress bar on standard error: `done` of its 40 marks filled, then `what`, then
+/// `wall` seconds. It rewrites its own line (a carriage return, and the rest of the line
+/// cleared); the caller ends the line when the work is over.
+inline void progressBar(int done, const std::string& what, double wall) {
+  constexpr int width = 40;
+  done = std::clamp(done, 0, width);
+  std::fprintf(stderr, "\r[%s%s] %s  %.1f s\x1b[K", std::string(std::size_t(done), '#').c_str(),
+               std::string(std::size_t(width - done), ' ').c_str(), what.c_str(), wall);
+  std::fflush(stderr);
+}
+
 /// A progress bar on standard error for a program that runs frames (gjkx_simulate,
 /// gjkx_bullet_scene): frame `frame` of `frames` done, after `wall` seconds.
 inline void progress(int frame, int frames, double wall) {
-  const int width = 40, done = frames > 0 ? frame * width / frames : width;
-  std::fprintf(stderr, "\r[%s%s] frame %d/%d  %.1f s", std::string(std::size_t(done), '#').c_str(),
-               std::string(std::size_t(width - done), ' ').c_str(), frame, frames, wall);
-  std::fflush(stderr);
+  progressBar(frames > 0 ? frame * 40 / frames : 40, "frame " + std::to_string(frame) + "/" + std::to_string(frames),
+              wall);
+}
+
+/// The same bar for a mesh's convex decomposition before a run (gjkx_simulate): HACD's phase
+/// and how far it has come, the seconds spent and the budget; the bar's line ends when the
+/// decomposition does (its phase "done").
+inline void decompositionProgress(const std::string& mesh, const char* phase, double fraction, double seconds,
+                                  double budget) {
+  char budgetText[32];
+  std::snprintf(budgetText, sizeof budgetText, "%g", budget);
+  const std::string name = mesh.substr(mesh.find_last_of('/') + 1);  // the file's name: the line stays short
+  progressBar(int(fraction * 40), "decomposing " + name + " (" + phase + ", budget " + budgetText + " s)", seconds);
+  if (std::string(phase) == "done") std::fprintf(stderr, "\n");
 }
 
 }  // namespace chapter

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
                "gjkx_simulate"};
   std::string scenePath, out = ".", ordering, scalar, variant = "certified", logPath, meshCache;
-  double tolerance = 0, duration = 0, frameRate = 0;
+  double tolerance = 0, duration = 0, frameRate = 0, decomposeBudget = 0;
   bool checks = false, noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
   gjkx::ImpulseSettings impulse;
   app.add_option("scene", scenePath, "the scene file (JSON)")->required();
@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
   app.add_option("--mesh-cache", meshCache,
                  "folder of the mesh decomposition cache (default: $GJKX_MESH_CACHE, else $XDG_CACHE_HOME/gjkx, "
                  "else ~/.cache/gjkx; an empty string: no cache)");
+  app.add_option("--decompose-budget", decomposeBudget,
+                 "seconds each mesh's convex decomposition may take before the mesh's convex hull is used instead "
+                 "(over the scene's decomposition.budget_s; default: the scene's, else 30)")
+      ->check(positiveNumber);
   app.add_option("--ordering", ordering, "override the scene's ordering")
       ->check(CLI::IsMember({"timewarp", "toi_heap", "fixed_step"}));
   app.add_option("--scalar", scalar, "override the scene's scalar type")->check(CLI::IsMember({"float", "double"}));
@@ -118,6 +122,11 @@ int main(int argc, char** argv) {
     impulse.relativeTolerance = impulse.absoluteTolerance;
     settings.impulse = impulse;
     if (app.count("--mesh-cache")) settings.meshCache = meshCache;
+    settings.decompositionBudget = decomposeBudget;
+    if (!quiet && isatty(fileno(stderr)))  // the run's progress bar, while a mesh is decomposed
+      settings.decompositionProgress = [](const std::string& mesh, const gjkx::DecompositionProgress& p) {
+        chapter::decompositionProgress(mesh, p.phase, p.fraction, p.seconds, p.budgetSeconds);
+      };
     world = std::make_unique<gjkx::World>(scene, settings);
   } catch (const std::exception& e) {
     std::cerr << "gjkx_simulate: " << e.what() << "\n";

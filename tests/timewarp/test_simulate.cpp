@@ -195,7 +195,29 @@ TEST_CASE("docs 07 names every key of the scene file, every option, every column
     INFO("frames.csv column " << column.name);
     CHECK(named(column.name));
   }
-  // The scene's and a body's keys, as the parser lists them when it refuses an unknown one.
+  // The scene's, a body's, a mesh's and a decomposition's keys, as the parser lists them when it
+  // refuses an unknown one; the shapes, as it lists them when it refuses an unknown shape.
+  const auto bodyWith = [](const std::string& shape) {
+    return R"({ "duration": 1, "bodies": [ { "name": "b", "shape": )" + shape + R"(, "position": [0, 0, 0] } ] })";
+  };
+  for (const std::string& text : {std::string(R"({"nokey": 1})"), std::string(R"({"mesh": "m.off", "nokey": 1})"),
+                                  std::string(R"({"mesh": "m.off", "decomposition": {"nokey": 1}})")}) {
+    std::string message;
+    try {
+      gjkx::parseScene(bodyWith(text), "scene");
+    } catch (const std::invalid_argument& e) {
+      message = e.what();
+    }
+    const auto at = message.find("(known: ");
+    REQUIRE(at != std::string::npos);
+    const bool shapes = text.find("mesh") == std::string::npos;
+    std::stringstream keys(message.substr(at + 8, message.find(')', at) - at - 8));
+    for (std::string key; std::getline(keys, key, ',');) {
+      key.erase(0, key.find_first_not_of(' '));
+      INFO("shape key " << key);
+      CHECK((shapes ? page.find("{\"" + key + "\"") != std::string::npos : named(key)));
+    }
+  }
   for (const std::string& text :
        {std::string(R"({ "duration": 1, "nokey": 1, "bodies": [] })"),
         std::string(R"({ "duration": 1, "bodies": [ { "name": "b", "nokey": 1, "shape": {"sphere": 1}, "position": [0, 0, 0] } ] })")}) {

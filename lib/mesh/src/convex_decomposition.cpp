@@ -227,10 +227,13 @@ WorkerAnswer runHacd(const TriangleMesh& mesh, const DecompositionSettings& sett
   const WorkerEnd end = runForked([&](int fd) { return hacdWorker(mesh, settings, fd); }, settings.budgetSeconds, hear,
                                   tick);
   answer.seconds = end.seconds;
+  const char* reached = progress.phase;
+  progress.phase = "done";  // the last call: a progress bar ends its line
+  progress.fraction = 1;
+  tick(end.seconds);
   char text[160];
   if (end.timedOut) {
-    std::snprintf(text, sizeof text, "its budget of %g s ran out (in HACD's %s phase)", settings.budgetSeconds,
-                  progress.phase);
+    std::snprintf(text, sizeof text, "its budget of %g s ran out (in HACD's %s phase)", settings.budgetSeconds, reached);
     answer.why = text;
   } else if (end.signal != 0) {
     std::snprintf(text, sizeof text, "HACD died of signal %d (%s)", end.signal, strsignal(end.signal));

@@ -29,6 +29,15 @@ const WorldSettings& validated(const WorldSettings& settings) {
   return settings;
 }
 
+/// What the world's settings say about meshes to decompose (body.hpp).
+MeshBuildOptions meshOptionsOf(const WorldSettings& settings) {
+  MeshBuildOptions options;
+  options.cache = settings.meshCache.value_or(defaultDecompositionCacheDir());
+  options.budgetSeconds = settings.decompositionBudget;
+  options.progress = settings.decompositionProgress;
+  return options;
+}
+
 /// The narrow phase of the scene's scalar: the one place the scalar is tested.
 template <typename AnyNarrowPhase>
 AnyNarrowPhase narrowPhaseOf(CollisionScalar scalar, const std::vector<WorldBody>& bodies) {
@@ -42,8 +51,7 @@ World::World(const Scene& scene, const WorldSettings& settings)
     : scene_(scene),
       settings_(validated(settings)),
       impulse_(settings.impulse),
-      bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate,
-                          settings.meshCache.value_or(defaultDecompositionCacheDir()))),
+      bodies_(buildBodies(scene, double(gjkx::frameCount(scene)) / scene.frameRate, meshOptionsOf(settings))),
       narrow_(narrowPhaseOf<AnyNarrowPhase>(scene.run.scalar, bodies_)),
       frameCount_(gjkx::frameCount(scene)) {
   impulse_.microcollisionSpeed = microcollisionSpeed(scene.gravity.norm(), scene.collisionTolerance);

@@ -92,7 +92,8 @@ std::string describe(const DecompositionReport& report, const std::string& name)
 /// How far a running decomposition has come, for a progress bar.
 struct DecompositionProgress {
   /// What HACD is doing: "graph" (the dual graph of the triangles and their concavity
-  /// points), "costs" (the cost of every possible merge), "merging" (the merges), "hulls".
+  /// points), "costs" (the cost of every possible merge), "merging" (the merges), "hulls";
+  /// last, once, "done" (whether it finished or not: a progress bar ends its line).
   const char* phase = "";
   /// How much of that phase is done, 0 to 1 (merging: the share of triangles merged away,
   /// which stops short of 1 when the concavity bound is met first; costs: 0, unknown).

@@ -11,7 +11,9 @@
 
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
+#include <gjkx/mesh/convex_decomposition.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -132,6 +134,12 @@ struct WorldSettings {
   /// The folder of the mesh decomposition cache; unset: the default
   /// (gjkx::defaultDecompositionCacheDir()), empty: no cache.
   std::optional<std::string> meshCache;
+  /// Seconds every mesh's decomposition may take, over each mesh's own `decomposition.budget_s`
+  /// (gjkx_simulate's --decompose-budget); 0: each mesh's own (gjkx::MeshBuildOptions).
+  double decompositionBudget = 0;
+  /// Called about ten times a second while a mesh is decomposed, with its file (gjkx_simulate's
+  /// progress bar); unset: nothing.
+  std::function<void(const std::string& mesh, const DecompositionProgress& progress)> decompositionProgress;
 
   /// Throws std::invalid_argument naming `field`.member for a value out of its range.
   void validate(const std::string& field) const;
