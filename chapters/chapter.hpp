@@ -1,4 +1,5 @@
-// What every chapter program shares: its command line (--out DIR, parsed by CLI11),
+// What every chapter program shares: its command line (--out DIR --format png|svg|pdf,
+// parsed by CLI11), the saving of its figures,
 // the formatting of numbers and tables (formatting.hpp) and the conversion of the
 // library's 3D vectors to the plane of a 2D figure.
 #pragma once
@@ -20,17 +21,44 @@
 
 namespace chapter {
 
-/// The output folder from `--out DIR` (default: the current folder), created if needed.
-/// `--help` prints the usage and exits 0; any other argument is an error (exit status 2).
+/// The format of the figures, from `--format` (png, the default and what figures/ keeps;
+/// svg or pdf for vectors, e.g. for slides or a paper).
+inline std::string& figureFormat() {
+  static std::string format = "png";
+  return format;
+}
+
+/// Declares `--out DIR` (into `out`) and `--format png|svg|pdf` (into figureFormat()) on
+/// `app`: every chapter program's options for its figures.
+inline void addFigureOptions(CLI::App& app, std::string& out) {
+  app.add_option("--out", out, "the folder for the figures, created if needed")->type_name("DIR")->capture_default_str();
+  app.add_option("--format", figureFormat(), "the figures' format")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->capture_default_str();
+}
+
+/// The output folder from `--out DIR` (default: the current folder), created if needed, and
+/// the figures' format from `--format` (see addFigureOptions()). `--help` prints the usage
+/// and exits 0; any other argument is an error (exit status 2).
 inline std::string outputFolder(int argc, char** argv) {
   std::string out = ".";
-  CLI::App app{"Draws this chapter's figures of the paper as PNG files in DIR."};
-  app.add_option("--out", out, "the folder for the PNG files, created if needed")
-      ->type_name("DIR")
-      ->capture_default_str();
+  CLI::App app{"Draws this chapter's figures of the paper in DIR, as PNG (the default), SVG or PDF files."};
+  addFigureOptions(app, out);
   parseOrExit(app, argc, argv);
   std::filesystem::create_directories(out);
   return out;
+}
+
+/// Where a figure was written, said on standard output.
+inline void wrote(const std::string& path) { std::printf("wrote %s\n", path.c_str()); }
+
+/// Writes `canvas` as the figure `name` in `folder`, in the format of `--format`
+/// (figureFormat()): folder/name.png, .svg or .pdf; says where, and returns the path.
+inline std::string save(gjkx::render::Canvas& canvas, const std::string& folder, const std::string& name) {
+  const std::string path = folder + "/" + name + "." + figureFormat();
+  canvas.save(path);
+  wrote(path);
+  return path;
 }
 
 /// A point of the plane z = 0 as the renderer's 2D point.
@@ -55,8 +83,5 @@ inline gjkx::render::Anchor toward(const Eigen::Vector2d& direction) {
   const double turns = std::atan2(direction.y(), direction.x()) / (2 * M_PI);
   return compass[(static_cast<int>(std::lround(turns * 8)) % 8 + 8) % 8];
 }
-
-/// Where a figure was written, said on standard output.
-inline void wrote(const std::string& path) { std::printf("wrote %s\n", path.c_str()); }
 
 }  // namespace chapter

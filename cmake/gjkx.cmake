@@ -67,14 +67,15 @@ function(gjkx_stage name)
   endif()
 endfunction()
 
-# gjkx_chapter(<NN_name> STAGES <stages>...)
+# gjkx_chapter(<NN_name> [THREE_D] STAGES <stages>...)
 #
 # chapters/<NN_name>/main.cpp, linked with its stages, the renderer and CLI11 (the
-# command line). Every chapter takes --out DIR and writes its PNGs there; the target
-# `figures` runs them all into figures/.
+# command line). Every chapter takes --out DIR and --format png|svg|pdf and writes its
+# figures there; the target `figures` runs them all for figures/. THREE_D: the chapter
+# draws 3D figures, so it needs OSMesa.
 function(gjkx_chapter name)
-  cmake_parse_arguments(ARG "" "" "STAGES" ${ARGN})
-  if(NOT GJKX_HAVE_RENDER)
+  cmake_parse_arguments(ARG "THREE_D" "" "STAGES" ${ARGN})
+  if(NOT GJKX_HAVE_RENDER OR (ARG_THREE_D AND NOT GJKX_HAVE_OSMESA))
     set_property(GLOBAL APPEND PROPERTY GJKX_SKIPPED_CHAPTERS ${name})
     return()
   endif()
@@ -112,11 +113,11 @@ function(gjkx_test stage concept)
   catch_discover_tests(${name} EXTRA_ARGS --warn NoTests TEST_PREFIX "${stage}/" PROPERTIES LABELS ${stage})
 endfunction()
 
-# Says, at the end of configuration, which chapters a build without the renderer left out.
+# Says, at the end of configuration, which chapters a build without the renderer (or OSMesa) left out.
 function(gjkx_report_skipped)
   get_property(skipped GLOBAL PROPERTY GJKX_SKIPPED_CHAPTERS)
   if(skipped)
     list(JOIN skipped ", " text)
-    message(WARNING "gjkx: no renderer (OSMesa/FreeType/libpng), chapters skipped: ${text}")
+    message(WARNING "gjkx: no renderer (Cairo and Pango), or no OSMesa for the 3D figures: chapters skipped: ${text}")
   endif()
 endfunction()

@@ -6,9 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libeigen3-dev            # linear algebra
-  libosmesa6-dev           # offscreen OpenGL for the figures
-  libfreetype-dev fonts-dejavu-core   # text labels
-  libpng-dev               # PNG output
+  libcairo2-dev libpango1.0-dev fonts-dejavu-core   # the figures: Cairo draws (PNG, SVG, PDF), Pango sets the labels
+  libosmesa6-dev           # offscreen OpenGL for the 3D figures
   libqhull-dev             # convex hulls of point sets
   catch2                   # tests (v2)
   libcli11-dev             # the command line of every program (CLI11, header only)

@@ -114,9 +114,7 @@ void shapesFigure(const std::string& out) {
   canvas.mesh(meshOf(polytope), solid);
   drawSupports(canvas, polytope);
 
-  const std::string path = out + "/support-mapping-shapes.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "support-mapping-shapes");
 }
 
 // One panel: the climb from `hint` to S_X(s), vertex by vertex.
@@ -167,9 +165,7 @@ void hillClimbingFigure(const std::string& out) {
   drawClimb(canvas, X, s, cold, 0.5, "cold start from the far side");
   canvas.setPanel({W, 0, W, H});
   drawClimb(canvas, X, s, warm, 2.0, "warm start from the last answer");
-  const std::string path = out + "/support-mapping-hill-climbing.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "support-mapping-hill-climbing");
   std::printf("hill climbing on %d vertices: %zu steps cold, %zu steps warm\n", X.vertexCount(),
               X.climbPath(s, cold).size() - 1, X.climbPath(s, warm).size() - 1);
 }

@@ -156,9 +156,7 @@ int main(int argc, char** argv) {
     canvas.setPanel({x + panelW, y, panelW, panelH});
     drawMinkowski(canvas, QminusP, trace.iterations[i]);
   }
-  const std::string path = out + "/fig02-gjk-2d.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "fig02-gjk-2d");
   std::printf("GJK: %s after %d iterations, distance %.6f (15/sqrt(17) = %.6f)\n", toString(result.status),
               result.iterations, result.distance, 15 / std::sqrt(17.0));
   return 0;

@@ -196,9 +196,7 @@ int main(int argc, char** argv) {
   panel(2, 1, "(f) intersecting: SD < 0 in every direction");
   drawProfile(canvas, P, Qinside, {{angleOf(bestInside.direction), "max", Anchor::AboveRight}});
 
-  const std::string path = out + "/fig03-supporting-distance.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "fig03-supporting-distance");
   std::printf("disjoint:     max SD over %d directions = %.4f, GJK distance = %.4f\n", kSamples, bestApart.value,
               distance.distance);
   std::printf("intersecting: max SD over %d directions = %.4f (minus the penetration depth); static test: %s\n",

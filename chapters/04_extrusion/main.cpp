@@ -90,8 +90,7 @@ void figure1(const std::string& out, const Pair& passThrough, const Pair& crossi
     summary += std::string(" ") + "AB"[row] + ": reference " + said(truth) + ", static " + said(atEnds) + ", sweeping " +
                said(swept) + ", extrusion " + statuses(test, toi) + (row == 0 ? ";" : "");
   }
-  c.savePng(out + "/fig01-intersection-tests.png");
-  chapter::wrote(out + "/fig01-intersection-tests.png");
+  chapter::save(c, out, "fig01-intersection-tests");
   std::printf("%s\n", summary.c_str());
 }
 
@@ -130,8 +129,7 @@ void figure4(const std::string& out, const std::vector<std::pair<Pair, std::stri
     summary += std::string(" (") + "abcd"[k] + ") " + statuses(test, toi) + ", reference " + said(truth) +
                (k + 1 < panels.size() ? ";" : "");
   }
-  c.savePng(out + "/fig04-extrusion-correct.png");
-  chapter::wrote(out + "/fig04-extrusion-correct.png");
+  chapter::save(c, out, "fig04-extrusion-correct");
   std::printf("%s\n", summary.c_str());
 }
 
@@ -167,8 +165,7 @@ void separatingSpace(const std::string& out, const Pair& apart, const Pair& hitt
     summary += std::string(row ? "; " : " ") + rows[row].second + ": " + drawSpace(c, pair, trace) + ", " +
                std::to_string(trace.steps.size()) + " s_i, " + statuses(test, toi);
   }
-  c.savePng(out + "/separating-space.png");
-  chapter::wrote(out + "/separating-space.png");
+  chapter::save(c, out, "separating-space");
   std::printf("%s\n", summary.c_str());
 }
 

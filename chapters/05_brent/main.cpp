@@ -354,8 +354,7 @@ int main(int argc, char** argv) {
     canvas.setPanel({700, 410, 620, 410});
     canvas.title("(d) the solver's trace");
     traceTables(canvas, canvas.plotArea().x + 20, canvas.plotArea().y + 10, hit);
-    canvas.savePng(out + "/brent-time-of-impact.png");
-    chapter::wrote(out + "/brent-time-of-impact.png");
+    chapter::save(canvas, out, "brent-time-of-impact");
   }
 
   // ---- Figure 2: a photo finish. A 3.2 x 0.6 bar moves by (-8, 1) over the corner of the
@@ -436,8 +435,7 @@ int main(int argc, char** argv) {
     canvas.title("(c) the solver's trace: Brent's iterates, and the complete extrusion tests (the chain)");
     traceTables(canvas, 130, 460 + 46, finish);
     lineLegend(canvas, 780, 460 + 46);
-    canvas.savePng(out + "/brent-photo-finish.png");
-    chapter::wrote(out + "/brent-photo-finish.png");
+    chapter::save(canvas, out, "brent-photo-finish");
   }
 
   // ---- Figure 3: Brent's method alone, on his example x^3 - 2x - 5 over [1, 3].
@@ -483,8 +481,7 @@ int main(int argc, char** argv) {
                       toString(root.iterates[k].kind),
                       format("%.1e", std::abs(brackets[k + 1].second - brackets[k + 1].first))});
     table(canvas, 870, 60, {0, 18, 132, 210, 330}, rows);
-    canvas.savePng(out + "/brent-root-finder.png");
-    chapter::wrote(out + "/brent-root-finder.png");
+    chapter::save(canvas, out, "brent-root-finder");
   }
   return 0;
 }

@@ -150,9 +150,7 @@ void piecesFigure(const std::string& out, const std::vector<Subject>& subjects) 
     for (size_t p = 0; p < hulls.size(); ++p)
       canvas.mesh(meshOf(hulls[p]), MeshStyle{pieceColor(static_cast<int>(p), 0.8), Stroke{palette::ink, 0.6}, true, true});
   }
-  const std::string path = out + "/kdop-pieces.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "kdop-pieces");
 }
 
 void hierarchyFigure(const std::string& out, const Subject& s) {
@@ -185,9 +183,7 @@ void hierarchyFigure(const std::string& out, const Subject& s) {
       ++colour;
     }
   }
-  const std::string path = out + "/kdop-hierarchy.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "kdop-hierarchy");
 }
 
 // The outline of a flat polytope at a pose, in the figure's plane.
@@ -257,9 +253,7 @@ void extrusionFigure(const std::string& out) {
   extrusionPanel(canvas, pPieces, bar,
                  Motion<double>::screw(Pose<double>::translate({0.5, 0.25, 0}), {0, 0, 0}, {0, 0, M_PI}), "half a turn",
                  0.5);
-  const std::string path = out + "/kdop-extrusion.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "kdop-extrusion");
 }
 
 // The front as blocks of the piece-pair matrix: a BVTT node (a, b) covers A's pieces under
@@ -334,9 +328,7 @@ void frontFigure(const std::string& out, const Subject& s) {
     canvas.text(Eigen::Vector2d(leaves / 2.0, -2.0), "blue: apart, red: pair kept, orange: new",
                 mathLabel, Anchor::Center);
   }
-  const std::string path = out + "/kdop-front.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "kdop-front");
   std::printf("front: frames %d and %d (%d front nodes changed); blue: apart, red: piece pair kept, orange edge: new\n",
               best - 1, best, bestChange);
 }

@@ -322,8 +322,7 @@ void spacetime(const std::string& out, const Run& r) {
     c.text(px.at(110, y), line, kSmall, Anchor::Right);
     y += 19;
   }
-  c.savePng(out + "/fig-timewarp-spacetime.png");
-  chapter::wrote(out + "/fig-timewarp-spacetime.png");
+  chapter::save(c, out, "fig-timewarp-spacetime");
 }
 
 // ---- fig-timewarp-orderings.png --------------------------------------------------------
@@ -359,8 +358,7 @@ void orderings(const std::string& out, const std::vector<Run>& runs) {
                 t.events, t.maxPenetration, t.tunnelled);
   }
   legend(c, H, 110, H - 14, false);
-  c.savePng(out + "/fig-timewarp-orderings.png");
-  chapter::wrote(out + "/fig-timewarp-orderings.png");
+  chapter::save(c, out, "fig-timewarp-orderings");
 }
 
 }  // namespace

@@ -179,9 +179,7 @@ void modelFigure(const std::string& out) {
   canvas.setCamera(Camera::orbit(V3(0, 0, 0.5), 0.62, -0.4, 0.35, 0.6, canvas.plotAspect()));
   canvas.mesh(placed(plant, V3::Zero(), Eigen::Quaterniond::Identity()),
               MeshStyle{plantColor, Stroke{palette::ink, 0.5}, false, true});
-  const std::string path = out + "/torso-model.png";
-  canvas.savePng(path);
-  chapter::wrote(path);
+  chapter::save(canvas, out, "torso-model");
 }
 
 /// How `run` was made, in words, from its summary.txt (RUN scene=... bodies=N scalar=...):
@@ -253,7 +251,9 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run) {
 
   // The script's settings (running_time.gp says what each is), numbers as C++ streams print them.
   std::ostringstream set;
-  set << "data=" << gnuplotString(name + ".csv") << "; out=" << gnuplotString("../" + name + ".png")
+  const std::string figure = name + "." + chapter::figureFormat();
+  set << "data=" << gnuplotString(name + ".csv") << "; out=" << gnuplotString("../" + figure)
+      << "; format=" << gnuplotString(chapter::figureFormat())
       << "; description=" << gnuplotString(runDescription(run)) << "; parts=" << parts.size();
   for (std::size_t p = 0; p < parts.size(); ++p) set << "; part" << p + 1 << "=" << gnuplotString(parts[p].second);
   set << "; checksNote="
@@ -275,7 +275,7 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run) {
     std::cerr << "08_torso: gnuplot failed on " << GJKX_TORSO_RUNNING_TIME_GP << " with " << set.str() << "\n";
     return false;
   }
-  chapter::wrote(out + "/" + name + ".png");
+  chapter::wrote(out + "/" + figure);
   return true;
 }
 
@@ -311,9 +311,9 @@ int main(int argc, char** argv) {
   bool reduced = false;
   std::vector<std::string> statsRuns;
   std::string table;
-  app.add_option("--out", out, "the folder for the PNG files, created if needed")->capture_default_str();
+  chapter::addFigureOptions(app, out);
   app.add_option("--run", run, "the folder of the run (bodies.csv of gjkx_simulate)")->capture_default_str();
-  app.add_option("--frames", framesDir, "also write one PNG per frame of the run into this folder");
+  app.add_option("--frames", framesDir, "also write one figure per frame of the run into this folder");
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
       ->capture_default_str();
   app.add_flag("--reduced", reduced, "the run is of the reduced scene (gjkx_generate_torso --reduced)");
@@ -348,7 +348,7 @@ int main(int argc, char** argv) {
       Canvas canvas(W, H);
       canvas.title("t = 0 s: dropped (no run kept)");
       drawScene(canvas, layout, startFrame(layout), bounds(layout, {startFrame(layout)}));
-      canvas.savePng(out + "/fig05-torso-crash.png");
+      chapter::save(canvas, out, "fig05-torso-crash");
     } else {
       const std::size_t impact = impactFrame(frames);
       std::size_t scattered = impact;
@@ -366,9 +366,8 @@ int main(int argc, char** argv) {
         canvas.title(title);
         drawScene(canvas, layout, panels[p], box);
       }
-      canvas.savePng(out + "/fig05-torso-crash.png");
+      chapter::save(canvas, out, "fig05-torso-crash");
     }
-    chapter::wrote(out + "/fig05-torso-crash.png");
     if (std::filesystem::exists(run + "/frames.csv"))
       runningTimeFigure(out, torso::readRun(run));
     else
@@ -384,10 +383,10 @@ int main(int argc, char** argv) {
         Canvas canvas(640, 640);
         char title[40], name[40];
         std::snprintf(title, sizeof title, "t = %.3f s", f.time);
-        std::snprintf(name, sizeof name, "/frame-%04d.png", f.frame);
+        std::snprintf(name, sizeof name, "/frame-%04d.", f.frame);
         canvas.title(title);
         drawScene(canvas, layout, f, box);
-        canvas.savePng(framesDir + name);
+        canvas.save(framesDir + name + chapter::figureFormat());
       }
       std::printf("wrote %zu frames to %s\n", frames.size(), framesDir.c_str());
     }

@@ -8,7 +8,8 @@
 #
 # 08_torso runs it in the folder of the data, setting with gnuplot -e:
 #   data         the CSV of the stacked values: time, then the top of each part (two header lines)
-#   out          the PNG to write
+#   out          the figure to write
+#   format       its format: png, svg or pdf (08_torso's --format)
 #   description  how the run was made (the title's second line)
 #   parts        the number of parts; part1, part2, ... their names, bottom to top
 #   checksNote   the share of wall time the independent checks (not the method) took
@@ -20,7 +21,16 @@
 colours = "#4e79a7 #59a14f #e15759 #f28e2b #b07aa1"  # the parts' colours, bottom to top
 total = parts + 1  # the column of the top of the stack
 
-set terminal pngcairo size 1200,(twoPanels ? 860 : 620) font 'sans,11'
+# 1200 pixels wide, or 12.5 inches (pdfcairo's unit) at 96 pixels an inch.
+if (format eq 'svg') {
+  set terminal svg size 1200,(twoPanels ? 860 : 620) font 'sans,11'
+} else {
+  if (format eq 'pdf') {
+    set terminal pdfcairo size 12.5,(twoPanels ? 8.96 : 6.46) font 'sans,11'
+  } else {
+    set terminal pngcairo size 1200,(twoPanels ? 860 : 620) font 'sans,11'
+  }
+}
 set output out
 set datafile separator ','
 set termoption noenhanced

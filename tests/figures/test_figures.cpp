@@ -1,6 +1,7 @@
 // The kept figures are what the chapters draw: regenerate every figure into a
-// temporary folder and compare it with the PNG kept in figures/, within a small
-// pixel tolerance (software rasterisers may differ in the last bit of coverage).
+// temporary folder and compare it with the PNG kept in figures/, within the kept
+// figures' tolerance (gjkx::render::keptFigureTolerance: another machine's rasteriser or
+// font library may round the last bit of an edge's coverage otherwise).
 #include <gjkx/render/image.hpp>
 
 #include <catch2/catch.hpp>
@@ -60,11 +61,13 @@ TEST_CASE("every chapter redraws its kept figures within a small pixel tolerance
                                                     gjkx::render::readPng((out / name).string()));
       INFO("differing pixels: " << diff.differingPixels << " (" << diff.differingFraction * 100 << "%), max channel "
                                 << diff.maxChannelDifference);
-      CHECK(diff.within(0.005));
+      CHECK(diff.within(gjkx::render::keptFigureTolerance));
     }
     fs::remove_all(out);
   }
-  // And no kept figure is left without a chapter that draws it.
+  // And no kept figure is left without a chapter that draws it (when every chapter was
+  // built: a build without OSMesa leaves out those with 3D figures).
+  if (!GJKX_ALL_CHAPTERS_BUILT) return;
   for (const std::string& name : pngsIn(kept)) {
     INFO("kept figure " << name << " is drawn by no chapter");
     CHECK(regenerated.count(name) == 1);

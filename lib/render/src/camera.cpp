@@ -1,4 +1,4 @@
-// Look-at, perspective and orthographic matrices for the 3D figures.
+// Look-at and perspective matrices, and the orbiting camera, of the 3D figures.
 #include <gjkx/render/camera.hpp>
 
 #include <Eigen/Geometry>
@@ -47,21 +47,6 @@ Eigen::Matrix4d perspective(double fovyRadians, double aspect, double nearPlane,
   return m;
 }
 
-Eigen::Matrix4d orthographic(double left, double right, double bottom, double top, double nearPlane,
-                             double farPlane) {
-  if (!(right > left)) throw std::invalid_argument("orthographic: right must exceed left");
-  if (!(top > bottom)) throw std::invalid_argument("orthographic: top must exceed bottom");
-  if (!(farPlane > nearPlane)) throw std::invalid_argument("orthographic: farPlane must exceed nearPlane");
-  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  m(0, 0) = 2.0 / (right - left);
-  m(1, 1) = 2.0 / (top - bottom);
-  m(2, 2) = -2.0 / (farPlane - nearPlane);
-  m(0, 3) = -(right + left) / (right - left);
-  m(1, 3) = -(top + bottom) / (top - bottom);
-  m(2, 3) = -(farPlane + nearPlane) / (farPlane - nearPlane);
-  return m;
-}
-
 Camera Camera::fromMatrices(const Eigen::Matrix4d& viewMatrix, const Eigen::Matrix4d& projectionMatrix) {
   Camera c;
   c.view = viewMatrix;
@@ -90,11 +75,6 @@ Camera Camera::orbit(const Eigen::Vector3d& target, double radius, double azimut
 Eigen::Vector3d Camera::eye() const {
   const Eigen::Matrix3d r = view.block<3, 3>(0, 0);
   return -r.transpose() * view.block<3, 1>(0, 3);
-}
-
-Eigen::Vector3d Camera::project(const Eigen::Vector3d& world) const {
-  const Eigen::Vector4d clip = viewProjection() * world.homogeneous();
-  return clip.head<3>() / clip.w();
 }
 
 }  // namespace gjkx::render

@@ -1,10 +1,12 @@
-// The 3D drawing calls of the Canvas: flat-shaded meshes, lines, points,
-// arrows and labels seen through the Camera of a panel (3D figures of the paper).
-#include "canvas_impl.hpp"
+// The 3D drawing calls of the Canvas (the 3D figures of the paper): meshes, polygons and
+// lines in space become a panel's scene for OSMesa (scene_gl.cpp); points, arrows and
+// labels in space are drawn by Cairo over it, at their projections.
+#include "internal.hpp"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -13,26 +15,31 @@ namespace gjkx::render {
 
 namespace {
 
-using detail::ScreenPoint;
+std::array<std::uint8_t, 4> bytes(const Color& c) {
+  const auto byte = [](double v) { return std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  return {byte(c.r), byte(c.g), byte(c.b), byte(c.a)};
+}
 
-// Overlays (points, arrow heads) are pulled this fraction of their distance
-// towards the eye so that they are not hidden by the surface they lie on.
-constexpr double kOverlayBias = 0.01;
+Eigen::Vector4d toClip(const Camera& camera, const Eigen::Vector3d& p) {
+  return camera.projection * (camera.view * p.homogeneous());
+}
 
-// Distance of a clip-space point from the near plane (>= 0: in front of it).
-double nearDistance(const Eigen::Vector4d& c) { return c.z() + c.w(); }
+// Line segments (pairs of points) of one colour and width as a batch of the scene.
+detail::Batch3d segments(const Camera& camera, const std::vector<Eigen::Vector3d>& ends, const Stroke& stroke) {
+  detail::Batch3d b;
+  b.lines = true;
+  b.lineWidth = stroke.width;
+  for (const auto& p : ends) b.vertices.push_back(toClip(camera, p));
+  b.colors.assign(ends.size() / 2, bytes(stroke.color));
+  return b;
+}
 
-// Sutherland-Hodgman clipping of a polygon against the near plane.
-std::vector<Eigen::Vector4d> clipNear(const std::vector<Eigen::Vector4d>& poly) {
-  std::vector<Eigen::Vector4d> out;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Eigen::Vector4d& a = poly[i];
-    const Eigen::Vector4d& b = poly[(i + 1) % poly.size()];
-    const double da = nearDistance(a), db = nearDistance(b);
-    if (da >= 0.0) out.push_back(a);
-    if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
-  }
-  return out;
+// Where a 3D point appears on the canvas, if it is in front of the eye.
+bool onScreen(const Camera& camera, const PixelRect& plot, const Eigen::Vector3d& p, Eigen::Vector2d& pixel) {
+  const Eigen::Vector4d c = toClip(camera, p);
+  if (!(c.w() > 0.0)) return false;
+  pixel = Eigen::Vector2d(plot.x + 0.5 * (c.x() / c.w() + 1.0) * plot.width, plot.y + 0.5 * (1.0 - c.y() / c.w()) * plot.height);
+  return true;
 }
 
 }  // namespace
@@ -42,6 +49,7 @@ void Canvas::Impl::require3d(const char* what) const {
 }
 
 void Canvas::setCamera(const Camera& camera) {
+  impl_->flush3d();
   impl_->camera = camera;
   impl_->has3d = true;
 }
@@ -51,30 +59,12 @@ const Camera& Canvas::camera() const {
   return impl_->camera;
 }
 
-namespace {
-
-// Clip coordinates of p, optionally pulled towards the eye (see kOverlayBias).
-Eigen::Vector4d toClip(const Camera& cam, const Eigen::Vector3d& p, double bias) {
-  Eigen::Vector4d eye = cam.view * p.homogeneous();
-  if (bias > 0.0) {
-    if (cam.isOrthographic()) eye.z() += bias * 2.0 / std::abs(cam.projection(2, 2));
-    else eye.head<3>() *= (1.0 - bias);
-  }
-  return cam.projection * eye;
-}
-
-ScreenPoint toScreenFromClip(const PixelRect& plot, const Eigen::Vector4d& c) {
-  const Eigen::Vector3d ndc = c.head<3>() / c.w();
-  return ScreenPoint{plot.x + 0.5 * (ndc.x() + 1.0) * plot.width, plot.y + 0.5 * (1.0 - ndc.y()) * plot.height,
-                     ndc.z()};
-}
-
-}  // namespace
-
 Eigen::Vector3d Canvas::project(const Eigen::Vector3d& p) const {
   impl_->require3d("project");
-  const ScreenPoint s = toScreenFromClip(impl_->plot, toClip(impl_->camera, p, 0.0));
-  return Eigen::Vector3d(s.x, s.y, s.z);
+  const Eigen::Vector4d c = toClip(impl_->camera, p);
+  const PixelRect& plot = impl_->plot;
+  return Eigen::Vector3d(plot.x + 0.5 * (c.x() / c.w() + 1.0) * plot.width,
+                         plot.y + 0.5 * (1.0 - c.y() / c.w()) * plot.height, c.z() / c.w());
 }
 
 void Canvas::mesh(const Mesh& m, const MeshStyle& meshStyle) {
@@ -83,104 +73,91 @@ void Canvas::mesh(const Mesh& m, const MeshStyle& meshStyle) {
   validateMesh(m);
   if (m.vertices.empty() || m.triangles.empty()) return;
   const Camera& cam = s.camera;
-  const bool ortho = cam.isOrthographic();
   const Eigen::Matrix3d rot = cam.view.block<3, 3>(0, 0);
   const Eigen::Vector3d eye = cam.eye(), viewDir = rot.transpose() * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d light = Eigen::Vector3d(-0.30, 0.45, 0.84).normalized();  // eye space: upper left, front
   const Eigen::Vector3d centroid =
-      std::accumulate(m.vertices.begin(), m.vertices.end(), Eigen::Vector3d(Eigen::Vector3d::Zero())) /
-      static_cast<double>(m.vertices.size());
+      std::accumulate(m.vertices.begin(), m.vertices.end(), Eigen::Vector3d(Eigen::Vector3d::Zero())) / double(m.vertices.size());
+  const auto corner = [&](std::size_t t, int k) -> const Eigen::Vector3d& { return m.vertices[std::size_t(m.triangles[t][std::size_t(k)])]; };
 
+  // Flat shading per face: the triangles of one plane (neighbours whose normals agree to
+  // rounding) take the normal of the first of them, so a face has one colour, exactly.
+  std::vector<Eigen::Vector3d> normal(m.triangles.size(), Eigen::Vector3d::Zero());
+  std::map<std::pair<int, int>, std::size_t> firstAtEdge;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Eigen::Vector3d n = (corner(t, 1) - corner(t, 0)).cross(corner(t, 2) - corner(t, 0));
+    if (n.norm() > 0.0) normal[t] = n.normalized();
+    for (int k = 0; k < 3; ++k) {
+      const int u = m.triangles[t][std::size_t(k)], v = m.triangles[t][std::size_t((k + 1) % 3)];
+      const auto [it, first] = firstAtEdge.emplace(std::make_pair(std::min(u, v), std::max(u, v)), t);
+      if (!first && std::abs(normal[it->second].dot(normal[t])) > 1.0 - 1e-12) normal[t] = normal[it->second];
+    }
+  }
   struct Face {
-    std::vector<ScreenPoint> tris;
-    Color color;
-    double depth;  // eye-space z of the centroid (more negative is farther)
+    std::size_t t;
+    double depth;  // eye-space z of the centre (more negative is farther)
+    std::array<std::uint8_t, 4> color;
+    bool front;
   };
   std::vector<Face> faces;
-  std::vector<bool> front(m.triangles.size(), false);
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    const auto& tri = m.triangles[t];
-    const Eigen::Vector3d& a = m.vertices[static_cast<std::size_t>(tri[0])];
-    const Eigen::Vector3d& b = m.vertices[static_cast<std::size_t>(tri[1])];
-    const Eigen::Vector3d& c = m.vertices[static_cast<std::size_t>(tri[2])];
-    Eigen::Vector3d n = (b - a).cross(c - a);
-    if (!(n.norm() > 0.0)) continue;
-    n.normalize();
-    const Eigen::Vector3d center = (a + b + c) / 3.0;
-    if (n.dot(center - centroid) < 0.0) n = -n;  // outward for convex meshes
-    front[t] = n.dot(ortho ? viewDir : Eigen::Vector3d(eye - center)) > 0.0;
-    const Eigen::Vector3d towardsViewer = front[t] ? n : Eigen::Vector3d(-n);
-    const double intensity =
-        style::lightAmbient + style::lightDiffuse * std::max(0.0, (rot * towardsViewer).dot(light));
-    Color color = meshStyle.fill;
-    if (meshStyle.lit) {
-      color.r = std::min(1.0, color.r * intensity);
-      color.g = std::min(1.0, color.g * intensity);
-      color.b = std::min(1.0, color.b * intensity);
-    }
-    const std::vector<Eigen::Vector4d> poly =
-        clipNear({toClip(cam, a, 0.0), toClip(cam, b, 0.0), toClip(cam, c, 0.0)});
-    if (poly.size() < 3) continue;
-    Face f{{}, color, (cam.view * center.homogeneous()).z()};
-    for (std::size_t i = 1; i + 1 < poly.size(); ++i)
-      for (const Eigen::Vector4d* v : {&poly[0], &poly[i], &poly[i + 1]}) f.tris.push_back(toScreenFromClip(s.plot, *v));
-    faces.push_back(std::move(f));
+    if (normal[t].isZero()) continue;
+    const Eigen::Vector3d centre = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
+    Eigen::Vector3d n = normal[t];
+    if (n.dot(centre - centroid) < 0.0) n = -n;  // outward, for convex meshes
+    const bool front = n.dot(cam.isOrthographic() ? viewDir : Eigen::Vector3d(eye - centre)) > 0.0;
+    const double intensity = style::lightAmbient + style::lightDiffuse * std::max(0.0, (rot * (front ? n : -n)).dot(light));
+    Color c = meshStyle.fill;
+    if (meshStyle.lit) c = Color{std::min(1.0, c.r * intensity), std::min(1.0, c.g * intensity), std::min(1.0, c.b * intensity), c.a};
+    faces.push_back(Face{t, (cam.view * centre.homogeneous()).z(), bytes(c), front});
   }
   const bool translucent = meshStyle.fill.a < 1.0;
+  // A translucent mesh is blended back to front: its far side first, then its near side
+  // (exact for a convex mesh), each from the farthest triangle on.
   if (translucent)
-    std::stable_sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.depth < y.depth; });
+    std::stable_sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) {
+      return x.front != y.front ? y.front : x.depth < y.depth;
+    });
 
-  // Feature edges; for translucent meshes the hidden ones go below the faces.
-  std::vector<std::pair<int, int>> backEdges, frontEdges;
+  // Feature edges; those of a translucent mesh's far side go below its faces.
+  std::vector<Eigen::Vector3d> backEdges, frontEdges;
   if (meshStyle.drawEdges && !meshStyle.edges.color.invisible()) {
     std::map<std::pair<int, int>, bool> seenFromFront;
-    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (const Face& f : faces)
       for (int k = 0; k < 3; ++k) {
-        const int u = m.triangles[t][static_cast<std::size_t>(k)], v = m.triangles[t][static_cast<std::size_t>((k + 1) % 3)];
-        bool& f = seenFromFront[{std::min(u, v), std::max(u, v)}];
-        f = f || front[t];
+        const int u = m.triangles[f.t][std::size_t(k)], v = m.triangles[f.t][std::size_t((k + 1) % 3)];
+        seenFromFront[{std::min(u, v), std::max(u, v)}] |= f.front;
       }
-    for (const auto& e : featureEdges(m)) (seenFromFront[e] || !translucent ? frontEdges : backEdges).push_back(e);
+    for (const auto& [u, v] : featureEdges(m)) {
+      auto& edges = seenFromFront[{u, v}] || !translucent ? frontEdges : backEdges;
+      edges.push_back(m.vertices[std::size_t(u)]);
+      edges.push_back(m.vertices[std::size_t(v)]);
+    }
   }
-  const auto drawEdges = [&](const std::vector<std::pair<int, int>>& edges) {
-    for (const auto& [u, v] : edges)
-      line3(m.vertices[static_cast<std::size_t>(u)], m.vertices[static_cast<std::size_t>(v)], meshStyle.edges);
-  };
-  drawEdges(backEdges);
-
-  std::vector<ScreenPoint> tris;
-  std::vector<Color> colors;
+  if (!backEdges.empty()) s.scene.push_back(segments(cam, backEdges, meshStyle.edges));
+  detail::Batch3d triangles;
+  triangles.depthWrite = !translucent;
+  triangles.offset = (meshStyle.drawEdges ? 0.5 * meshStyle.edges.width : 0.0) + 1.0;
   for (const Face& f : faces) {
-    tris.insert(tris.end(), f.tris.begin(), f.tris.end());
-    colors.insert(colors.end(), f.tris.size() / 3, f.color);
+    for (int k = 0; k < 3; ++k) triangles.vertices.push_back(toClip(cam, corner(f.t, k)));
+    triangles.colors.push_back(f.color);
   }
-  s.beginPrimitive(true, !translucent);
-  // Push the faces back so edges (half their width beside the true edge) stay visible.
-  const double edgeWidth = meshStyle.drawEdges ? meshStyle.edges.width : 0.0;
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(static_cast<GLfloat>(s.ss * (0.5 * edgeWidth + 1.0)), 4.0f);
-  s.emitTrianglesColored(tris, colors);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-
-  drawEdges(frontEdges);
+  s.scene.push_back(std::move(triangles));
+  if (!frontEdges.empty()) s.scene.push_back(segments(cam, frontEdges, meshStyle.edges));
 }
 
 void Canvas::polygon3(const std::vector<Eigen::Vector3d>& points, const ShapeStyle& shape) {
   Impl& s = *impl_;
   s.require3d("polygon3");
-  std::vector<Eigen::Vector4d> clip;
-  for (const auto& p : points) clip.push_back(toClip(s.camera, p, 0.0));
-  const std::vector<Eigen::Vector4d> poly = clipNear(clip);
-  std::vector<ScreenPoint> screen;
-  for (const auto& c : poly) screen.push_back(toScreenFromClip(s.plot, c));
-  if (screen.size() >= 3 && !shape.fill.invisible()) {
-    std::vector<ScreenPoint> fan;
-    for (std::size_t i = 1; i + 1 < screen.size(); ++i) fan.insert(fan.end(), {screen[0], screen[i], screen[i + 1]});
-    s.beginPrimitive(true, shape.fill.a >= 1.0);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(static_cast<GLfloat>(s.ss * (0.5 * shape.outline.width + 1.0)), 4.0f);
-    s.emitTriangles(fan, shape.fill);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+  if (points.size() >= 3 && !shape.fill.invisible()) {
+    detail::Batch3d fan;
+    fan.depthWrite = shape.fill.a >= 1.0;
+    fan.offset = 0.5 * shape.outline.width + 1.0;
+    for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+      for (const auto* p : {&points[0], &points[i], &points[i + 1]}) fan.vertices.push_back(toClip(s.camera, *p));
+      fan.colors.push_back(bytes(shape.fill));
+    }
+    s.scene.push_back(std::move(fan));
   }
   polyline3(points, shape.outline, true);
 }
@@ -190,71 +167,33 @@ void Canvas::line3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Str
 }
 
 void Canvas::polyline3(const std::vector<Eigen::Vector3d>& points, const Stroke& stroke, bool closed) {
-  Impl& s = *impl_;
-  s.require3d("polyline3");
-  if (points.empty()) return;
-  std::vector<Eigen::Vector4d> clip;
-  for (const auto& p : points) clip.push_back(toClip(s.camera, p, 0.0));
-  if (closed && clip.size() > 2) clip.push_back(clip.front());
-  // Runs of the polyline in front of the near plane, cut where it crosses it.
-  std::vector<ScreenPoint> run;
-  const auto flush = [&]() {
-    if (!run.empty()) s.strokePath(run, false, stroke, true);
-    run.clear();
-  };
-  if (clip.size() == 1) {
-    if (nearDistance(clip[0]) >= 0.0) s.strokePath({toScreenFromClip(s.plot, clip[0])}, false, stroke, true);
-    return;
-  }
-  for (std::size_t i = 0; i + 1 < clip.size(); ++i) {
-    Eigen::Vector4d a = clip[i], b = clip[i + 1];
-    const double da = nearDistance(a), db = nearDistance(b);
-    if (da < 0.0 && db < 0.0) {
-      flush();
-      continue;
-    }
-    if (da < 0.0) a = a + (b - a) * (da / (da - db));
-    if (db < 0.0) b = a + (b - a) * (nearDistance(a) / (nearDistance(a) - db));
-    if (run.empty() || da < 0.0) {
-      flush();
-      run.push_back(toScreenFromClip(s.plot, a));
-    }
-    run.push_back(toScreenFromClip(s.plot, b));
-    if (db < 0.0) flush();
-  }
-  flush();
+  impl_->require3d("polyline3");
+  if (points.size() < 2 || stroke.color.invisible() || !(stroke.width > 0.0)) return;
+  std::vector<Eigen::Vector3d> ends;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) ends.insert(ends.end(), {points[i], points[i + 1]});
+  if (closed && points.size() > 2) ends.insert(ends.end(), {points.back(), points.front()});
+  impl_->scene.push_back(segments(impl_->camera, ends, stroke));
 }
 
 void Canvas::point3(const Eigen::Vector3d& p, const Color& fill, double radiusPx, const Stroke& outline) {
-  Impl& s = *impl_;
-  s.require3d("point3");
-  const Eigen::Vector4d c = toClip(s.camera, p, kOverlayBias);
-  if (nearDistance(c) < 0.0) return;
-  s.disc(toScreenFromClip(s.plot, c), radiusPx, fill, outline, true);
+  impl_->require3d("point3");
+  Eigen::Vector2d c;
+  if (onScreen(impl_->camera, impl_->plot, p, c))
+    impl_->overlays.push_back([=](cairo_t* cr) { detail::disc(cr, c, radiusPx, fill, outline); });
 }
 
 void Canvas::arrow3(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const Stroke& stroke, double headPx) {
-  Impl& s = *impl_;
-  s.require3d("arrow3");
-  Eigen::Vector4d a = toClip(s.camera, from, 0.2 * kOverlayBias), b = toClip(s.camera, to, kOverlayBias);
-  const double da = nearDistance(a), db = nearDistance(b);
-  if (da < 0.0 && db < 0.0) return;
-  if (db < 0.0) {  // the tip is behind the eye: only the visible part of the shaft
-    line3(from, to, stroke);
-    return;
-  }
-  if (da < 0.0) a = a + (b - a) * (da / (da - db));
-  s.arrowPath(toScreenFromClip(s.plot, a), toScreenFromClip(s.plot, b), stroke, headPx, true);
+  impl_->require3d("arrow3");
+  Eigen::Vector2d a, b;
+  if (onScreen(impl_->camera, impl_->plot, from, a) && onScreen(impl_->camera, impl_->plot, to, b))
+    impl_->overlays.push_back([=](cairo_t* cr) { detail::arrowPath(cr, a, b, stroke, headPx); });
 }
 
 void Canvas::text3(const Eigen::Vector3d& p, const std::string& markup, const TextStyle& style, Anchor anchor,
                    const Eigen::Vector2d& offsetPx) {
-  Impl& s = *impl_;
-  s.require3d("text3");
-  const Eigen::Vector4d c = toClip(s.camera, p, 0.0);
-  if (nearDistance(c) < 0.0 || c.w() <= 0.0) return;
-  const ScreenPoint q = toScreenFromClip(s.plot, c);
-  s.queueLabel(q.x, q.y, markup, style, anchor, offsetPx);
+  impl_->require3d("text3");
+  Eigen::Vector2d q;
+  if (onScreen(impl_->camera, impl_->plot, p, q)) impl_->queueLabel(q.x(), q.y(), markup, style, anchor, offsetPx);
 }
 
 }  // namespace gjkx::render

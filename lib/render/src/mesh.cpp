@@ -1,4 +1,4 @@
-// Triangle meshes of the 3D figures: boxes and feature edges.
+// Triangle meshes of the 3D figures: their check and their feature edges.
 #include <gjkx/render/mesh.hpp>
 
 #include <Eigen/Geometry>
@@ -18,18 +18,6 @@ void validateMesh(const Mesh& mesh) {
       if (i < 0 || i >= n)
         throw std::invalid_argument("Mesh: triangle " + std::to_string(t) + " refers to vertex " + std::to_string(i) +
                                     " of " + std::to_string(n));
-}
-
-Mesh makeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  for (int k = 0; k < 3; ++k)
-    if (!(lo[k] < hi[k])) throw std::invalid_argument("makeBox: lo must be below hi in every coordinate");
-  Mesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back((i & 1) ? hi.x() : lo.x(), (i & 2) ? hi.y() : lo.y(), (i & 4) ? hi.z() : lo.z());
-  // Two triangles per face, counter-clockwise seen from outside.
-  m.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                 {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  return m;
 }
 
 std::vector<std::pair<int, int>> featureEdges(const Mesh& mesh, double angleDegrees) {

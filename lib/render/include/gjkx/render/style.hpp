@@ -69,11 +69,10 @@ inline constexpr double panelPadding = 10.0;
 /// Height reserved at the top of a panel for its title, in pixels.
 inline constexpr double titleBand = 26.0;
 
-/// Multisample count of the offscreen framebuffer (clamped to what the GL offers).
-inline constexpr int msaaSamples = 8;
-/// Supersampling factor applied on top of multisampling (rendered larger, then
-/// averaged down), so the figures' thin lines are smoothly anti-aliased.
-inline constexpr int supersample = 2;
+/// Supersampling of the 3D scenes: OSMesa renders them this many times larger in x and
+/// y, and each block of supersample x supersample pixels is averaged into one (16 samples
+/// a pixel, the same on every processor, unlike the rasteriser's multisampling).
+inline constexpr int supersample = 4;
 
 /// Ambient part of the flat shading of the 3D figures' meshes.
 inline constexpr double lightAmbient = 0.55;
