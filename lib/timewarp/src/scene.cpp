@@ -133,7 +133,7 @@ ShapeSpec parseShape(const Json& value, const Where& where) {
     return shape;
   }
   if (!value.is_object() || value.size() != 1)
-    where.fail("shape", "must be an object with exactly one of box, sphere, capsule, polytope, mesh; got " +
+    where.fail("shape", "must be an object with exactly one of box, sphere, capsule, cylinder, polytope, mesh; got " +
                             value.dump());
   const std::string kind = value.begin().key();
   const Json& spec = value.begin().value();
@@ -152,6 +152,11 @@ ShapeSpec parseShape(const Json& value, const Where& where) {
     if (!spec.is_array() || spec.size() != 2) where.fail(field, "must be [radius, half_length], got " + spec.dump());
     shape.radius = positive(spec[0], where, field + "[0] (radius)");
     shape.halfLength = nonNegative(spec[1], where, field + "[1] (half_length)");
+  } else if (kind == "cylinder") {
+    shape.kind = ShapeSpec::Kind::Cylinder;
+    if (!spec.is_array() || spec.size() != 2) where.fail(field, "must be [radius, half_length], got " + spec.dump());
+    shape.radius = positive(spec[0], where, field + "[0] (radius)");
+    shape.halfLength = positive(spec[1], where, field + "[1] (half_length)");
   } else if (kind == "polytope") {
     shape.kind = ShapeSpec::Kind::Polytope;
     if (!spec.is_array() || spec.size() < 4) where.fail(field, "must be an array of at least 4 points [x, y, z]");
@@ -162,7 +167,7 @@ ShapeSpec parseShape(const Json& value, const Where& where) {
     shape.meshPath = text(spec, where, field);
     if (shape.meshPath.empty()) where.fail(field, "must be a file path, got an empty string");
   } else {
-    where.fail("shape." + kind, "is not a shape (known: box, sphere, capsule, polytope, mesh)");
+    where.fail("shape." + kind, "is not a shape (known: box, sphere, capsule, cylinder, polytope, mesh)");
   }
   return shape;
 }

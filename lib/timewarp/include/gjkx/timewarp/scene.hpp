@@ -22,6 +22,7 @@
 /// tolerance sqrt(eps) of float). The optional `fixed_substeps` sets the steps per frame of
 /// the `fixed_step` ordering. A shape is one of `{"box": [hx, hy, hz]}` (half extents),
 /// `{"sphere": r}`, `{"capsule": [r, half_length]}` (axis along the body's z),
+/// `{"cylinder": [r, half_length]}` (axis along the body's z, flat caps at ±half_length),
 /// `{"polytope": [[x, y, z], ...]}` (the convex hull of the points, in the body's frame),
 /// `{"mesh": "path"}` (or `{"mesh": "path", "scale": s, "collision": "decompose" | "hull",
 /// "decomposition": {"budget_s": 30, ...}}`). Bad input is rejected where it enters, with a message that names
@@ -62,6 +63,7 @@ struct ShapeSpec {
     Box,       ///< `{"box": [hx, hy, hz]}`
     Sphere,    ///< `{"sphere": r}`
     Capsule,   ///< `{"capsule": [r, half_length]}`, axis along z
+    Cylinder,  ///< `{"cylinder": [r, half_length]}`, axis along z
     Polytope,  ///< `{"polytope": [[x, y, z], ...]}`
     Mesh,      ///< `{"mesh": "path"}`
   };
@@ -69,9 +71,9 @@ struct ShapeSpec {
   Kind kind = Kind::Sphere;
   /// Half extents of a box.
   Eigen::Vector3d halfExtents = Eigen::Vector3d::Zero();
-  /// Radius of a sphere or capsule.
+  /// Radius of a sphere, capsule or cylinder.
   double radius = 0;
-  /// Half the length of a capsule's axis.
+  /// Half the length of a capsule's or a cylinder's axis.
   double halfLength = 0;
   /// The points of a polytope.
   std::vector<Eigen::Vector3d> points;
