@@ -11,6 +11,7 @@
 #include <BulletCollision/CollisionShapes/btCapsuleShape.h>
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <LinearMath/btGeometryUtil.h>
@@ -165,6 +166,17 @@ inline void buildShape(const gjkx::Scene& scene, std::size_t index, const gjkx::
       out.shape = std::make_unique<btCapsuleShapeZ>(btScalar(spec.shape.radius), btScalar(2 * spec.shape.halfLength));
       out.halfThickness = spec.shape.radius;
       return;
+    case gjkx::ShapeSpec::Kind::Cylinder: {
+      // Our cylinder's axis is the body's z (scene.hpp): Bullet's btCylinderShapeZ, whose
+      // half extents are (r, r, h). Like a box's, its margin lies inside its extents; the
+      // default 0.04 is at most a tenth of its smaller half size.
+      const double r = spec.shape.radius, h = spec.shape.halfLength;
+      auto cylinder = std::make_unique<btCylinderShapeZ>(toBullet(Eigen::Vector3d(r, r, h)));
+      cylinder->setMargin(btScalar(std::min(kBulletDefaultMargin, 0.1 * std::min(r, h))));
+      out.halfThickness = std::min(r, h);
+      out.shape = std::move(cylinder);
+      return;
+    }
     case gjkx::ShapeSpec::Kind::Polytope:
       out.shape = hullShape(principalVertices(body.pieces[0], P), out.halfThickness);
       return;

@@ -135,6 +135,32 @@ TEST_CASE("mass properties of a capsule against a tessellated capsule", "[dynami
   CHECK(close(ball.inertia, sphere.inertia, 1e-14));
 }
 
+TEST_CASE("mass properties of a cylinder: the closed form, and against a fine prism", "[dynamics][mass]") {
+  const double r = 0.3, h = 0.8, density = 7.0;
+  const MassProperties closed = massProperties(Cylinder<double>(r, h), density);
+  // The formula of any mechanics text: m = rho pi r^2 L, J_zz = m r^2 / 2,
+  // J_xx = J_yy = m (3 r^2 + L^2) / 12 with L = 2h.
+  const double mass = density * kPi * r * r * 2 * h;
+  CHECK(closed.mass == Approx(mass).epsilon(1e-14));
+  CHECK(closed.centerOfMass.norm() == 0);
+  const Eigen::Matrix3d formula =
+      Eigen::Vector3d(mass * (3 * r * r + 4 * h * h) / 12, mass * (3 * r * r + 4 * h * h) / 12, mass * r * r / 2)
+          .asDiagonal();
+  CHECK(close(closed.inertia, formula, 1e-14));
+  // Mirtich's algorithm on the prism over a regular 720-gon inscribed in the cross-section:
+  // its area is (n/2) r^2 sin(2 pi / n), 1.3e-5 short of the disc's.
+  std::vector<Eigen::Vector3d> prism;
+  const int n = 720;
+  for (int k = 0; k < n; ++k)
+    for (const double z : {-h, h}) prism.emplace_back(r * std::cos(2 * kPi * k / n), r * std::sin(2 * kPi * k / n), z);
+  const MassProperties poly = massProperties(Polytope<double>::hull(prism), density);
+  CHECK(poly.mass == Approx(closed.mass).epsilon(1e-4));
+  CHECK(poly.centerOfMass.norm() < 1e-12);
+  CHECK(close(poly.inertia, closed.inertia, 1e-4));
+  REQUIRE_THROWS_WITH(massProperties(Cylinder<double>(0.0, 1.0), 1.0), Contains("shape"));
+  REQUIRE_THROWS_WITH(massProperties(Cylinder<double>(1.0, 0.0), 1.0), Contains("shape"));
+}
+
 TEST_CASE("mass properties reject bad input", "[dynamics][mass][input]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Box<double> box(Eigen::Vector3d(1, 1, 1));

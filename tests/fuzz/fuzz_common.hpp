@@ -337,6 +337,8 @@ void corePoints(const Shape<S>& shape, std::vector<Vector3<S>>& points, S& radiu
         } else if constexpr (std::is_same_v<X, Capsule<S>>) {
           points = {x.axis.a, x.axis.b};
           radius = x.radius;
+        } else if constexpr (std::is_same_v<X, Cylinder<S>>) {
+          throw std::logic_error("the fuzz targets make no cylinders (no hull of points swept by a ball)");
         } else {
           points = x.vertices();
         }

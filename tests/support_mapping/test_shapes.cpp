@@ -147,6 +147,14 @@ TEMPLATE_TEST_CASE("support of each shape in the six axis directions", "[shapes]
     CHECK(cap.center() == V::Zero());
     CHECK(cap.support(V::Zero()) == V(0, 0, -1));  // s = 0: just the axis end
   }
+  SECTION("cylinder: a rim point, the top on a zero s_z, a cap's centre along the axis") {
+    const Cylinder<S> cyl(S(0.5), S(2));
+    checkAxes(cyl, {V(0.5, 0, 2), V(-0.5, 0, 2), V(0, 0.5, 2), V(0, -0.5, 2), V(0, 0, 2), V(0, 0, -2)});
+    CHECK(cyl.center() == V::Zero());
+    CHECK(cyl.support(V::Zero()) == V(0, 0, 2));  // s = 0: the top cap's centre
+    CHECK(near<S>(cyl.support(V(3, 4, -1)), V(0.3, 0.4, -2)));  // by hand: r (3, 4) / 5, bottom
+    CHECK(cyl.boundingRadius() == Approx(std::sqrt(4.25)));
+  }
   SECTION("polytope: the octahedron with half axes 1, 2, 3") {
     const Polytope<S> oct = octahedron<S>();
     REQUIRE(oct.vertexCount() == 6);
@@ -214,6 +222,17 @@ TEMPLATE_TEST_CASE("support property on random directions", "[shapes]", float, d
         [&](std::mt19937& rng) { return V(a + uniform<S>(rng, 0, 1) * (b - a) + r * inBall<S>(rng)); },
         [&](const V& s) { return std::max(s.dot(a), s.dot(b)) + r * s.norm(); });
   }
+  SECTION("cylinder") {
+    const S r = 0.75, h = 1.25;
+    checkSupportProperty<Cylinder<S>>(
+        Cylinder<S>(r, h),
+        [&](std::mt19937& rng) {
+          // Points of the solid, the rims included (its extreme points).
+          const S angle = uniform<S>(rng, 0, S(2 * kPi)), rho = r * std::sqrt(uniform<S>(rng, 0, 1));
+          return V(rho * std::cos(angle), rho * std::sin(angle), uniform<S>(rng, -1, 1) * h);
+        },
+        [&](const V& s) { return r * std::hypot(s.x(), s.y()) + h * std::abs(s.z()); });
+  }
   SECTION("polytope") {
     std::mt19937 pointRng(7);
     std::vector<V> points;
@@ -232,6 +251,36 @@ TEMPLATE_TEST_CASE("support property on random directions", "[shapes]", float, d
           for (const V& x : points) best = std::max(best, s.dot(x));
           return best;
         });
+  }
+}
+
+// The cylinder against brute force: its two rims sampled at 4,096 points each (a
+// cylinder's extreme points are its rims). Along every direction the best sample may fall
+// short of the support value by at most the sampling's sag, r (1 - cos(pi / 4096)) |s|,
+// never pass it, and the support point itself is a point of the cylinder.
+TEMPLATE_TEST_CASE("cylinder: support against brute force on a sampled cylinder", "[shapes]", float, double) {
+  using S = TestType;
+  using V = Vec<S>;
+  const S r = 0.4, h = 0.9;
+  const Cylinder<S> cyl(r, h);
+  const int n = 4096;
+  std::vector<V> rims;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * kPi * k / n;
+    for (const S z : {-h, h}) rims.push_back(V(S(r * std::cos(angle)), S(r * std::sin(angle)), z));
+  }
+  std::mt19937 rng(2024);
+  const S sag = S(r * (1 - std::cos(kPi / n)));
+  for (int k = 0; k < 300; ++k) {
+    const V s = randomDirection<S>(rng);
+    const V x = cyl.support(s);
+    S best = -std::numeric_limits<S>::infinity();
+    for (const V& p : rims) best = std::max(best, s.dot(p));
+    INFO("s = " << s.transpose() << ", S(s) = " << x.transpose());
+    CHECK(s.dot(x) >= best - tol<S>() * S(10) * s.norm());
+    CHECK(s.dot(x) <= best + (sag + tol<S>() * S(10)) * s.norm());
+    CHECK(std::hypot(x.x(), x.y()) <= r * (1 + tol<S>() * S(10)));
+    CHECK(std::abs(x.z()) == h);
   }
 }
 
@@ -308,6 +357,7 @@ TEMPLATE_TEST_CASE("Shape variant agrees with the concrete shapes", "[shapes][va
   same(Box<S>(V(1, 2, 3)));
   same(Sphere<S>(S(2)));
   same(Capsule<S>(V(0, 0, -1), V(0, 0, 1), S(0.5)));
+  same(Cylinder<S>(S(0.5), S(2)));
   same(octahedron<S>());
 
   // The variant holds the alternative it was given.
@@ -366,6 +416,8 @@ TEMPLATE_TEST_CASE("shapes reject bad input", "[shapes][input]", float, double) 
 
   REQUIRE_THROWS_AS(Capsule<S>(V::Zero(), V(0, 0, 1), S(-0.5)), std::invalid_argument);
   REQUIRE_THROWS_WITH(Capsule<S>(V::Zero(), V(0, 0, 1), S(-0.5)), Contains("capsule.radius"));
+  REQUIRE_THROWS_WITH(Cylinder<S>(S(-0.5), S(1)), Contains("cylinder.radius"));
+  REQUIRE_THROWS_WITH(Cylinder<S>(S(0.5), std::numeric_limits<S>::quiet_NaN()), Contains("cylinder.halfLength"));
   REQUIRE_THROWS_WITH(Capsule<S>(V(nan, 0, 0), V(0, 0, 1), S(0.5)), Contains("capsule.a"));
   REQUIRE_THROWS_WITH(Capsule<S>(V(0, 0, 0), V(0, nan, 1), S(0.5)), Contains("capsule.b"));
 }

@@ -209,3 +209,17 @@ TEST_CASE("scene: a decomposed mesh is reported once, and a budget given to buil
   CHECK_THROWS_WITH(buildBodies(scene, 0.05, options), Catch::Contains("budgetSeconds"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("scene: a cylinder is [radius, half_length] along z, each positive") {
+  const Scene scene = parseScene(sceneWith(R"("shape": {"cylinder": [0.1, 0.25]}, "position": [0, 0, 1])"), "test.json");
+  const ShapeSpec& s = scene.bodies[1].shape;
+  CHECK(s.kind == ShapeSpec::Kind::Cylinder);
+  CHECK(s.radius == 0.1);
+  CHECK(s.halfLength == 0.25);
+  CHECK_THAT(errorOf(sceneWith(R"("shape": {"cylinder": [-0.1, 0.25]}, "position": [0, 0, 1])")),
+             Catch::Contains("body 'ball'") && Catch::Contains("shape.cylinder[0] (radius)"));
+  CHECK_THAT(errorOf(sceneWith(R"("shape": {"cylinder": [0.1, 0]}, "position": [0, 0, 1])")),
+             Catch::Contains("shape.cylinder[1] (half_length)"));
+  CHECK_THAT(errorOf(sceneWith(R"("shape": {"cylinder": 0.1}, "position": [0, 0, 1])")),
+             Catch::Contains("shape.cylinder") && Catch::Contains("[radius, half_length]"));
+}

@@ -541,3 +541,30 @@ TEST_CASE("world: a mesh as users have it: scaled, its hull for an open mesh, an
   CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "bodies": [ { "name": "m", "shape": {"mesh": "a.off", "scale": -1},
       "position": [0, 0, 0] } ] })"), Catch::Contains("shape.scale"));
 }
+
+TEST_CASE("world: a cylinder dropped on its cap, and one dropped on its side, come to rest on the floor") {
+  // Standing, its cap meets the floor with its whole rim; lying, a line of its side does.
+  // Either way it must end where the floor holds it: its centre h or r above the floor,
+  // upright or lying as it fell, and still.
+  const double r = 0.1, h = 0.15;
+  for (const bool standing : {true, false}) {
+    INFO((standing ? "standing" : "lying"));
+    const std::string orientation = standing ? "[1, 0, 0, 0]" : "[0.7071067811865476, 0, 0.7071067811865476, 0]";
+    const double rest = standing ? h : r;
+    const Scene scene = parseScene(R"({ "duration": 2, "bodies": [
+        { "name": "floor", "shape": {"box": [5, 5, 0.5]}, "position": [0, 0, -0.5], "static": true },
+        { "name": "cylinder", "shape": {"cylinder": [0.1, 0.15]}, "orientation": )" + orientation +
+                                   R"(, "position": [0, 0, )" + std::to_string(rest + 0.05) + R"(] } ] })");
+    World world(scene, checked());
+    CHECK(world.bodies()[1].rigid.massProperties().mass == Approx(1000 * M_PI * r * r * 2 * h).epsilon(1e-12));
+    const Run run = runAll(world);
+    CHECK(run.collisions > 0);
+    CHECK(run.tunnelled == 0);
+    CHECK(run.maxPenetration < 2 * scene.collisionTolerance);
+    CHECK(world.positionOf(1).z() == Approx(rest).margin(2 * scene.collisionTolerance));
+    const BodyState s = world.stateOf(1);
+    const double axisUp = std::abs((s.worldFromBody.rotation * Eigen::Vector3d::UnitZ()).z());
+    CHECK(axisUp == Approx(standing ? 1.0 : 0.0).margin(1e-3));
+    CHECK(s.velocity.norm() < 1e-2);
+  }
+}

@@ -159,6 +159,31 @@ TEST_CASE("checks: a convex body against a convex body is their piece distance")
   CHECK(referenceSignedDistance(prepared(a), poseA, prepared(b), poseB) == referencePieceDistance(a.pieces[0], poseA, b.pieces[0], poseB));
 }
 
+TEST_CASE("checks: a cylinder against a box, standing, lying and overlapping, by hand") {
+  // The cylinder r = 0.1, h = 0.15 over a box whose top is z = 0. Standing at height z its
+  // cap is z - h above the top; lying (its axis along x), its side is z - r above it; and
+  // the same with the cylinder turned about its axis, which must not matter.
+  Body cylinder, floor;
+  cylinder.pieces = {Cylinder<double>(0.1, 0.15)};
+  floor.pieces = {Box<double>(Eigen::Vector3d(5, 5, 0.5))};
+  const ReferenceBody c = prepared(cylinder), f = prepared(floor);
+  const Pose<double> poseFloor = Pose<double>::translate(Eigen::Vector3d(0, 0, -0.5));
+  const Eigen::Vector3d y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+  // (GJK measures a cylinder: an overlap is a distance of 0, not a depth.)
+  const auto expected = [](double distance) { return Approx(std::max(distance, 0.0)).margin(1e-6); };
+  for (const double height : {0.3, 0.1501, 0.12, 0.09}) {
+    INFO("height " << height);
+    const Pose<double> standing = Pose<double>::translate(Eigen::Vector3d(0.2, 0, height));
+    CHECK(referenceSignedDistance(c, standing, f, poseFloor) == expected(height - 0.15));
+    for (const double spin : {0.0, 0.3, 1.0}) {
+      INFO("spin " << spin);
+      const Pose<double> lying = Pose<double>::fromAxisAngle(y, M_PI / 2, Eigen::Vector3d(0, 0, height)) *
+                                 Pose<double>::fromAxisAngle(z, spin, Eigen::Vector3d::Zero());
+      CHECK(referenceSignedDistance(c, lying, f, poseFloor) == expected(height - 0.1));
+    }
+  }
+}
+
 TEST_CASE("checks: a pose that is not finite is refused, not measured as infinitely far") {
   Body a;
   a.pieces = {Sphere<double>(0.5), Box<double>(Eigen::Vector3d(0.1, 0.1, 0.1))};

@@ -124,6 +124,20 @@ MassProperties sphereProperties(double r, double density) {
   return m;
 }
 
+MassProperties cylinderProperties(const Cylinder<double>& cylinder, double density) {
+  const double r = cylinder.radius, h = cylinder.halfLength;
+  if (!(r > 0) || !(h > 0)) failInput("shape", "a cylinder of radius 0 or length 0 has no volume");
+  // m = rho pi r^2 2h. About the axis, each ring of radius rho' adds rho' ^2 dm:
+  // J_zz = rho 2h int_0^r rho'^2 2 pi rho' d rho' = m r^2 / 2. Across it, through the centre:
+  // J_xx = rho int (y^2 + z^2) dV, where int y^2 over the disc is pi r^4 / 4 (half the polar
+  // moment) and int z^2 over [-h, h] is 2h^3 / 3, so J_xx = m (r^2 / 4 + h^2 / 3).
+  MassProperties m;
+  m.mass = density * kPi * r * r * 2 * h;
+  const double across = m.mass * (r * r / 4 + h * h / 3);
+  m.inertia = Eigen::Vector3d(across, across, m.mass * r * r / 2).asDiagonal();
+  return m;
+}
+
 MassProperties capsuleProperties(const Capsule<double>& capsule, double density) {
   const double r = capsule.radius;
   if (!(r > 0)) failInput("shape", "a capsule of radius 0 has no volume");
@@ -232,6 +246,8 @@ MassProperties massProperties(const Shape<double>& shape, double density) {
           return sphereProperties(x.radius, density);
         } else if constexpr (std::is_same_v<X, Capsule<double>>) {
           return capsuleProperties(x, density);
+        } else if constexpr (std::is_same_v<X, Cylinder<double>>) {
+          return cylinderProperties(x, density);
         } else if constexpr (std::is_same_v<X, Polytope<double>>) {
           if (x.planar()) failInput("shape", "a planar polytope (polygon) has no volume");
           return polyhedronMassProperties(x.vertices(), x.triangles(), density);

@@ -21,6 +21,7 @@ Shape<S> convexShapeOf(const ShapeSpec& spec, const std::vector<Eigen::Vector3d>
     case ShapeSpec::Kind::Sphere: return Sphere<S>(S(spec.radius));
     case ShapeSpec::Kind::Capsule:
       return Capsule<S>(V(0, 0, -S(spec.halfLength)), V(0, 0, S(spec.halfLength)), S(spec.radius));
+    case ShapeSpec::Kind::Cylinder: return Cylinder<S>(S(spec.radius), S(spec.halfLength));
     case ShapeSpec::Kind::Polytope: {
       std::vector<V> cast;
       for (const auto& p : points) cast.push_back(p.cast<S>());

@@ -2,6 +2,7 @@
 #include <gjkx/timewarp/contact.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -27,6 +28,19 @@ std::vector<Eigen::Vector3d> touchingFeature(const Shape<double>& shape, const P
         } else if constexpr (std::is_same_v<X, Sphere<double>>) {
           candidates = {Eigen::Vector3d::Zero()};
           radius = x.radius;
+        } else if constexpr (std::is_same_v<X, Cylinder<double>>) {
+          // Its two rims, sampled at the same angles (a cap flat on a floor touches with its
+          // whole rim, a side with a segment from rim to rim), the samples starting at the
+          // angle of its support point, so that the highest point is exactly among them and
+          // a side's segment has both its ends (one end alone would move the patch's centre).
+          const Eigen::Vector3d s = pose.toBodyDirection(direction);
+          const double start = s.x() != 0 || s.y() != 0 ? std::atan2(s.y(), s.x()) : 0.0;
+          constexpr int kRimPoints = 16;
+          for (int k = 0; k < kRimPoints; ++k) {
+            const double angle = start + 2 * M_PI * k / kRimPoints;
+            const Eigen::Vector2d rim = x.radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+            for (const double z : {-x.halfLength, x.halfLength}) candidates.emplace_back(rim.x(), rim.y(), z);
+          }
         } else {
           candidates = {x.support(pose.toBodyDirection(direction))};
         }

@@ -30,7 +30,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// A piece as the bounds and the reference see it, in the body frame (ReferenceBody::Piece).
 /// The reference measures spheres, capsules, boxes and polytopes of up to 16 vertices;
-/// GJK the rest.
+/// GJK the rest (larger polytopes, cylinders).
 ReferenceBody::Piece pieceOf(const Shape<double>& shape) {
   ReferenceBody::Piece piece;
   std::visit(
@@ -81,6 +81,28 @@ ReferenceBody::Piece pieceOf(const Shape<double>& shape) {
             }
           }
           piece.exact = x.vertexCount() <= 16;
+        } else if constexpr (std::is_same_v<X, Cylinder<double>>) {
+          // The reference measures hulls of points swept by a ball, which a cylinder is not
+          // (flat caps, sharp rims): GJK measures it (not exact), and its bounds come from
+          // the prism on the regular 16-gon circumscribed about its cross-section, which
+          // holds it (the 16-gon's corners lie at r / cos(pi/16)), so every bound stays a
+          // lower bound. Its faces give the normals: the caps' and the 16 sides'.
+          constexpr int n = 16;
+          const double outer = x.radius / std::cos(M_PI / n);
+          for (int k = 0; k < n; ++k) {
+            const double angle = 2 * M_PI * k / n;
+            for (const double z : {-x.halfLength, x.halfLength})
+              piece.points.emplace_back(outer * std::cos(angle), outer * std::sin(angle), z);
+            const double mid = angle + M_PI / n;
+            piece.normals.emplace_back(std::cos(mid), std::sin(mid), 0.0);
+            const int bottom = 2 * k, top = 2 * k + 1, nextBottom = 2 * ((k + 1) % n), nextTop = nextBottom + 1;
+            piece.edges.push_back({bottom, top});
+            piece.edges.push_back({std::min(bottom, nextBottom), std::max(bottom, nextBottom)});
+            piece.edges.push_back({std::min(top, nextTop), std::max(top, nextTop)});
+          }
+          piece.normals.push_back(Eigen::Vector3d::UnitZ());
+          piece.normals.push_back(-Eigen::Vector3d::UnitZ());
+          piece.exact = false;
         } else if constexpr (std::is_same_v<X, Point<double>>) {
           piece.points.push_back(x.a);
           piece.edges.push_back({0, 0});

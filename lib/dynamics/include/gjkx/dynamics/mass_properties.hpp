@@ -3,7 +3,7 @@
 ///
 /// The paper's simulation (§6) moves rigid bodies; their response to gravity and to
 /// collision impulses needs the mass m, the centre of mass c and the inertia tensor J
-/// about c. Boxes, spheres and capsules have closed forms. A convex polytope is handled
+/// about c. Boxes, spheres, capsules and cylinders have closed forms. A convex polytope is handled
 /// by Mirtich's algorithm, B. Mirtich, "Fast and Accurate Computation of Polyhedral Mass
 /// Properties", Journal of Graphics Tools 1(2), 1996: each volume integral
 /// \f$\int_V x^i y^j z^k\,dV\f$ is turned into a sum of surface integrals over the faces by the
@@ -31,11 +31,12 @@ struct MassProperties {
 /// The mass properties of `shape` filled with material of `density` (mass per volume).
 ///
 /// Closed forms for the box (\f$m = 8\rho h_x h_y h_z\f$, \f$J_{xx} = \tfrac{m}{3}(h_y^2 + h_z^2)\f$),
-/// the sphere (\f$J = \tfrac25 m r^2 \mathbf{1}\f$) and the capsule (a cylinder and two
-/// hemispheres); Mirtich's polyhedral mass properties for a polytope. Throws
-/// std::invalid_argument naming the field for a density that is not finite and positive
-/// ("density"), for a shape without volume ("shape": a point, segment, triangle, planar
-/// polytope, or a box, sphere or capsule of zero size).
+/// the sphere (\f$J = \tfrac25 m r^2 \mathbf{1}\f$), the capsule (a cylinder and two
+/// hemispheres) and the cylinder (\f$m = 2\pi\rho r^2 h\f$, \f$J_{zz} = \tfrac12 m r^2\f$,
+/// \f$J_{xx} = J_{yy} = m(\tfrac14 r^2 + \tfrac13 h^2)\f$); Mirtich's polyhedral mass
+/// properties for a polytope. Throws std::invalid_argument naming the field for a density
+/// that is not finite and positive ("density"), for a shape without volume ("shape": a
+/// point, segment, triangle, planar polytope, or a box, sphere, capsule or cylinder of zero size).
 MassProperties massProperties(const Shape<double>& shape, double density);
 
 /// Mirtich's volume integrals of a closed triangulated surface (counter-clockwise seen

@@ -1,5 +1,5 @@
 /// @file
-/// @brief Support mappings of the simple shapes: point, segment, triangle, box, sphere, capsule (§2.1).
+/// @brief Support mappings of the simple shapes: point, segment, triangle, box, sphere, capsule, cylinder (§2.1).
 ///
 /// Each shape is given in its own body frame; `Placed` puts it at a pose. The support
 /// mapping of each is a one-line formula, derived above it. Ties (a face or an edge
@@ -9,6 +9,7 @@
 #include <gjkx/support_mapping/support.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace gjkx {
 
@@ -167,6 +168,46 @@ struct Capsule {
     requireFinite(end, field);
     return end;
   }
+};
+
+/// The cylinder of radius r about the body's z axis, from z = -h to z = h (§2.1).
+///
+/// Derivation. The cylinder is the Minkowski sum of the disc \f$D = \{(x, y, 0) : x^2 + y^2
+/// \le r^2\}\f$ and the segment \f$[-h\hat{z}, h\hat{z}]\f$, so its support is the sum of
+/// theirs (the support mapping of a Minkowski sum is the sum of the support mappings). The
+/// disc's: \f$\vec{s}\cdot x = s_x x + s_y y\f$ over the disc is largest on its rim in the
+/// direction of \f$\vec{s}_{xy} = (s_x, s_y, 0)\f$, at \f$r\,\vec{s}_{xy}/\lVert\vec{s}_{xy}\rVert\f$
+/// (when \f$\vec{s}_{xy} = 0\f$ every point of the disc ties; we take its centre). The
+/// segment's: the end on the side of \f$s_z\f$ (the top on a tie, as the box takes +h).
+/// So \f$S(\vec{s}) = r\,\vec{s}_{xy}/\lVert\vec{s}_{xy}\rVert + \operatorname{sign}(s_z)\,h\,\hat{z}\f$:
+/// a point of the top or bottom rim, or the centre of a cap when s is along the axis.
+/// (Unlike the capsule, the cylinder is no core swept by a ball: its caps are flat and its
+/// rims sharp, so GJK meets it as it meets any curved shape, support point by support point.)
+template <typename S>
+struct Cylinder {
+  /// The scalar type.
+  using Scalar = S;
+  /// The radius r of its circular cross-section.
+  S radius;
+  /// Half its length along z, h.
+  S halfLength;
+  /// A cylinder of radius r and half length h about the body's z axis (each finite, not negative).
+  Cylinder(S r, S h) : radius(r), halfLength(h) {
+    requireNonNegative(radius, "cylinder.radius");
+    requireNonNegative(halfLength, "cylinder.halfLength");
+  }
+  /// The disc's support plus the segment's: a rim point, or a cap's centre for s along z.
+  Vector3<S> support(const Vector3<S>& s) const {
+    const S across = std::hypot(s.x(), s.y());  // \f$\lVert\vec{s}_{xy}\rVert\f$, without overflow
+    const S z = s.z() < S(0) ? -halfLength : halfLength;
+    if (!(across > S(0))) return Vector3<S>(S(0), S(0), z);
+    return Vector3<S>(s.x() * (radius / across), s.y() * (radius / across), z);
+  }
+  /// The body origin (the middle of the axis).
+  Vector3<S> center() const { return Vector3<S>::Zero(); }
+  /// The largest distance of a point of the shape from the body origin (§3, certified
+  /// margin): a point of a rim, \f$\sqrt{r^2 + h^2}\f$.
+  S boundingRadius() const { return std::hypot(radius, halfLength); }
 };
 
 }  // namespace gjkx

@@ -18,7 +18,7 @@ class Shape {
   /// The scalar type.
   using Scalar = S;
   /// The alternatives.
-  using Variant = std::variant<Point<S>, Segment<S>, Triangle<S>, Box<S>, Sphere<S>, Capsule<S>, Polytope<S>>;
+  using Variant = std::variant<Point<S>, Segment<S>, Triangle<S>, Box<S>, Sphere<S>, Capsule<S>, Polytope<S>, Cylinder<S>>;
 
   /// Any alternative converts to a Shape.
   template <typename X, typename = std::enable_if_t<std::is_constructible_v<Variant, X>>>
