@@ -12,7 +12,7 @@
 //           brent_max=N photo_finish=... max_penetration=... tunnelled=N
 //
 // which is also written to DIR/summary.txt, followed by a line saying how the run was made
-// (RUN scene=... bodies=N scalar=... variant=... ordering=... tolerance=... frame_rate=...
+// (RUN scene=... bodies=N scalar=... solver=... variant=... ordering=... tolerance=... frame_rate=...
 // checks=on|off ... impulse_tolerance=... sticking_tolerance=...), so that a kept run says
 // what it is, and by a WORK line of counts that do not depend on the machine's load.
 //
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file: bodies in free flight, collisions found by the paper's solver and "
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
                "gjkx_simulate"};
-  std::string scenePath, out = ".", ordering, scalar, variant = "certified", logPath, meshCache;
+  std::string scenePath, out = ".", ordering, scalar, variant = "certified", solver = "gjkx", logPath, meshCache;
   double tolerance = 0, duration = 0, frameRate = 0, decomposeBudget = 0;
   bool checks = false, noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
   gjkx::ImpulseSettings impulse;
@@ -74,7 +74,12 @@ int main(int argc, char** argv) {
   app.add_option("--ordering", ordering, "override the scene's ordering")
       ->check(CLI::IsMember({"timewarp", "toi_heap", "fixed_step"}));
   app.add_option("--scalar", scalar, "override the scene's scalar type")->check(CLI::IsMember({"float", "double"}));
-  app.add_option("--variant", variant, "the extrusion test: the paper's or the certified one")
+  app.add_option("--solver", solver,
+                 "the time-of-impact solver: §5 exactly as the paper wrote it (paper: the paper's extrusion test, no "
+                 "refinement, no warm start) or this project's (gjkx: its refinements, --variant's test)")
+      ->check(CLI::IsMember({"paper", "gjkx"}))
+      ->capture_default_str();
+  app.add_option("--variant", variant, "the extrusion test of the gjkx solver: the paper's or the certified one")
       ->check(CLI::IsMember({"paper", "certified"}))
       ->capture_default_str();
   app.add_option("--tolerance", tolerance, "override the scene's collision tolerance (length units)")
@@ -99,6 +104,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
+  if (solver == "paper") {
+    if (app.count("--variant") && variant != "paper") {
+      std::cerr << "gjkx_simulate: --solver paper runs the paper's extrusion test; --variant " << variant
+                << " needs --solver gjkx\n";
+      return 2;
+    }
+    variant = "paper";
+  }
 
   gjkx::Scene scene;
   std::unique_ptr<gjkx::World> world;
@@ -114,6 +127,7 @@ int main(int argc, char** argv) {
     if (frameRate > 0) scene.frameRate = frameRate;
     gjkx::WorldSettings settings;
     settings.variant = variant == "paper" ? gjkx::ExtrusionVariant::Paper : gjkx::ExtrusionVariant::Certified;
+    settings.solver = solver == "paper" ? gjkx::ToiSolverMode::Paper : gjkx::ToiSolverMode::Gjkx;
     noChecks = noChecks || !checks;
     settings.checks = !noChecks;
     settings.warmStarts = !coldStarts;
@@ -214,10 +228,10 @@ int main(int argc, char** argv) {
   std::printf("%s\n", line);
   std::ofstream summary(out + "/summary.txt");
   summary << line << "\nRUN scene=" << scenePath << " bodies=" << world->bodies().size()
-          << " scalar=" << (scene.run.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " variant=" << variant
+          << " scalar=" << (scene.run.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " solver=" << solver << " variant=" << variant
           << " ordering=" << gjkx::orderingName(scene.run.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
-          << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts ? "off" : "on")
-          << " coherence=" << (coldStarts || noCoherence ? "off" : "on")
+          << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts || solver == "paper" ? "off" : "on")
+          << " coherence=" << (coldStarts || noCoherence || solver == "paper" ? "off" : "on")
           << " front_tracking=" << (noFronts ? "off" : "on") << " impulse_tolerance=" << impulse.absoluteTolerance
           << " sticking_tolerance=" << impulse.stickingTolerance << "\n";
   // The work done, in counts that do not depend on the machine's load: what a change to the

@@ -72,10 +72,14 @@ ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j,
   const double tolerance = step.scene.collisionTolerance;
   const Moving<Shape<S>> movingP{piecesOf(step.bodies, i)[pi], motionOf(P, i)};
   const Moving<Shape<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
-  ToiSettings<S> settings;
+  // The paper's solver runs the paper's test with every refinement off; ours takes the
+  // world's variant and warm starts.
+  const bool paper = step.settings.solver == ToiSolverMode::Paper;
+  ToiSettings<S> settings = ToiSettings<S>::of(step.settings.solver);
   settings.collisionTolerance = S(tolerance);
-  settings.variant = step.settings.variant;
-  settings.warmStart = step.settings.warmStarts;
+  if (!paper) settings.variant = step.settings.variant;
+  settings.warmStart = settings.warmStart && step.settings.warmStarts;
+  settings.coherence = settings.coherence && step.settings.coherence;
   // The time of impact is needed to within the tolerance band, not to the solver's default
   // of sqrt(eps) of the interval (6e-10 s of a frame in double): a contact found where the
   // bodies are within 1.5 tolerances is as good to the impulse as one found at exactly one.
@@ -99,7 +103,7 @@ ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j,
   if (closing > 0)
     settings.timeTolerance = S(std::min(0.25, tuning.closingBand * tolerance / (closing * (t1 - t0))));
   ExtrusionCache<S>* coherence = nullptr;
-  if (step.settings.coherence && step.settings.warmStarts) coherence = &coherence_[step.piecePairKey(i, pi, j, pj)];
+  if (settings.coherence && settings.warmStart) coherence = &coherence_[step.piecePairKey(i, pi, j, pj)];
   const ToiResult<S> r = timeOfImpact(movingP, movingQ, S(t0), S(t1), settings, nullptr, coherence);
   ToiResult<double> out;
   out.status = r.status;

@@ -45,14 +45,21 @@
 /// reported time is one at which the bodies do not interpenetrate, and no later than the
 /// first time they come within the tolerance (plus the time tolerance).
 ///
-/// Four things beyond the paper make a query cheaper without changing what it proves:
-/// each complete test after the first starts GJK from the last one's simplex (an
-/// `ExtrusionCache`); each stored vector keeps where its support searches ended (its
-/// hill-climbing hints); after a restart the bracket's far end is the nearest known point
-/// where the new vectors are below the tolerance (the last bracket's), so that Brent does
-/// not creep towards a far t1 one restart at a time; and after a restart a *probe* goes
-/// straight to where the exact distances extrapolate to the tolerance. The last two are
-/// in toi_refinements.hpp, whose file comment says why Brent needs them.
+/// Beyond the paper, refinements make a query cheaper without changing what it proves,
+/// each a switch of `ToiSettings` (all off in `ToiSettings::paper()`, which runs §5 as
+/// written; all on in `ToiSettings::gjkx()`, the default): each complete test after the
+/// first starts GJK from the last one's simplex (`warmStart`, an `ExtrusionCache`) and
+/// the first from the pair's last query (`coherence`); each stored vector keeps where its
+/// support searches ended (`supportHints`, its hill-climbing hints); after a restart the
+/// bracket's far end is the nearest known point where the new vectors are below the
+/// tolerance (`farEndReuse`), so that Brent does not creep towards a far t1 one restart at
+/// a time; a *probe* goes straight to where the exact distances extrapolate to the
+/// tolerance (`probe`); a *leap* doubles a creeping restart's advance (`leap`); a grazing
+/// pass may end within an accepted band (`acceptedBand`); a contact leaving at t0 is
+/// told apart (`separatingAtStart`); and the query runs in P's frame and on its own clock
+/// (`inFrameOfP`, `onQueryClock`). The bracket's refinements are in toi_refinements.hpp,
+/// whose file comment says why Brent needs them; what each buys is measured in
+/// figures/data/toi-refinements.md.
 ///
 /// *Grazing.* Where the distance has a long, shallow minimum just above the tolerance (a
 /// spinning rib passing a cartilage at 1.1 tolerances), no single vector separates by the
@@ -117,7 +124,7 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
   // is kept for the next. A hint only: the verdicts are those of a cold start.
   const auto run = [&](detail::ToiSolver<MovingP, MovingQ>&& solver) {
     ToiResult<S> result = solver.solve();
-    if (coherence && settings.warmStart) *coherence = solver.cache();
+    if (coherence && settings.warmStart && settings.coherence) *coherence = solver.cache();
     return result;
   };
   requireInterval(t0, t1, "timeOfImpact");
@@ -129,7 +136,8 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
                 detail::CanRetime<MovingP>::value && detail::CanRetime<MovingQ>::value) {
     const Vector3<S> origin = settings.inFrameOfP ? detail::queryOrigin(P, t0) : Vector3<S>::Zero();
     const S duration = t1 - t0;
-    const S clock = std::isfinite(duration) ? t0 : S(0);  // an interval too long for S stays on the caller's clock
+    // an interval too long for S stays on the caller's clock
+    const S clock = settings.onQueryClock && std::isfinite(duration) ? t0 : S(0);
     if (origin.squaredNorm() > S(0) || clock != S(0)) {  // already there: nothing to change
       const MovingP localP = detail::localBody(P, Vector3<S>(-origin), clock);
       const MovingQ localQ = detail::localBody(Q, Vector3<S>(-origin), clock);

@@ -75,9 +75,9 @@ inline auto ToiSolver<MovingP, MovingQ>::bracket(std::optional<BrentIterate>& le
     high = probed.t;
     fHigh = probed.f;
   }
-  tryNearerFarEnd(previousHigh_, high, fHigh);
+  if (settings_.farEndReuse) tryNearerFarEnd(previousHigh_, high, fHigh);
   const S advance = ta_ - taBefore_;
-  if (result_.restarts > 0 && advance < S(0.25) * (high - ta_) && result_.brentIterations < settings_.maxIterations) {
+  if (settings_.leap && result_.restarts > 0 && advance < S(0.25) * (high - ta_) && result_.brentIterations < settings_.maxIterations) {
     BrentIterate x = iterateAt(ta_ + 2 * advance, BrentStepKind::Leap, ta_, high);
     if (x.separates) {
       leap = std::move(x);
@@ -115,6 +115,7 @@ template <typename MovingP, typename MovingQ>
 inline auto ToiSolver<MovingP, MovingQ>::probe() -> ProbeOutcome {
   ProbeOutcome out;
   const S da = last_.distanceAtStart;
+  if (!settings_.probe) return out;
   if (!(taBefore2_ < taBefore_ && distanceBefore_ > da) || result_.brentIterations >= settings_.maxIterations) return out;
   // Half a time tolerance short of the estimate: where it is that good, the probe lands
   // still apart (proven), and the next, one time tolerance on, within the tolerance: a
@@ -204,7 +205,8 @@ inline auto ToiSolver<MovingP, MovingQ>::backwardProof(const SeparatingVectors<S
   const PlacedP Pa = P_.at(ta_);
   const PlacedQ Qa = Q_.at(ta_);
   for (int k = vectors.count - 1; k >= 0 && best < tol_; --k) {
-    SupportHint hintP = vectors.hintP[k], hintQ = vectors.hintQ[k];
+    SupportHint hintP = settings_.supportHints ? vectors.hintP[k] : 0;
+    SupportHint hintQ = settings_.supportHints ? vectors.hintQ[k] : 0;
     const S sd = supportingDistance(Pa, Qa, vectors.vectors[k], hintP, hintQ);
     ++result_.sdEvaluations;
     best = std::max(best, lowestSupportingDistance(settings_.variant, sd, vectors.sdStart[k], ts - ta_,

@@ -47,7 +47,23 @@ inline bool reportsCollision(ToiStatus status) {
          status == ToiStatus::NumericalFailure;
 }
 
+/// Which time-of-impact solver runs: §5 exactly as the paper wrote it, or this project's,
+/// with every refinement beyond the paper on (`ToiSettings::paper()`, `ToiSettings::gjkx()`).
+enum class ToiSolverMode {
+  Paper,  ///< the paper's extrusion test and §5's loop, and nothing else
+  Gjkx,   ///< §5 with this project's refinements (the default)
+};
+
+/// The name of a solver mode, as `gjkx_simulate --solver` and the scene file spell it.
+inline const char* toString(ToiSolverMode mode) { return mode == ToiSolverMode::Paper ? "paper" : "gjkx"; }
+
 /// Settings of the time-of-impact solver.
+///
+/// Every refinement beyond §5 is a switch of its own, documented with what it buys (the
+/// numbers: figures/data/toi-refinements.md, written by `gjkx_toi_refinements`). They
+/// change how much work a query does, never what a verdict proves: every interval
+/// declared free of contact is proven so as §5's own steps prove it. `paper()` turns them
+/// all off; `gjkx()`, the default, has them all on.
 template <typename S>
 struct ToiSettings {
   /// Bodies closer than this collide (§2.3); default \f$\sqrt{\epsilon}\f$.
@@ -63,6 +79,7 @@ struct ToiSettings {
   /// at the first restart inside the band, instead of proving the pass free of contact one
   /// short link at a time (see time_of_impact.hpp's file comment, *Grazing*). Every reported time is still
   /// one proven free of contact, and no later than the first time within the tolerance.
+  /// Applies only with `acceptedBand`.
   S acceptedDistance = S(0);
   /// `acceptedDistance` applies only once the query has taken this many Brent iterations,
   /// so that it cuts the long chains of a grazing pass and leaves every short query as §5
@@ -74,14 +91,73 @@ struct ToiSettings {
   int maxIterations = 100;
   /// Settings of every GJK run.
   GjkSettings<S> gjk;
-  /// Run the query in the frame of P (see `timeOfImpact`); false runs it in world
-  /// coordinates, for comparison only (the study's extreme cases show what that costs).
-  bool inFrameOfP = true;
-  /// Start every complete extrusion test after the first where the last one ended (its GJK
-  /// simplex and its support hints, `ExtrusionCache`), and the first where the caller's
-  /// `coherence` cache says the last query ended; false runs each cold, to measure what the
-  /// warm starts buy. The verdicts are the same either way.
+
+  // --- Beyond the paper: each refinement a switch (all on here, all off in paper()) ---
+
+  /// *Warm-started complete tests.* Every complete extrusion test after the first starts
+  /// where the last one ended (its GJK simplex and the support hints at \f$t_1\f$,
+  /// `ExtrusionCache`): the restarts come ever closer to the contact, where the closest
+  /// features change little, and a warm GJK needs a couple of iterations where a cold one
+  /// needs five or more. §5 recomputes "a complete GJK extrusion test" at each restart.
   bool warmStart = true;
+  /// *Coherence between queries* (§2.2's reinitialization from the previous query, which
+  /// §5 does not ask of the extrusion test): the first complete test starts where the
+  /// caller's `coherence` cache says the pair's last query ended (its separating vector,
+  /// tried first, GJK's simplex and hints), and this query's end is kept there for the
+  /// next. Needs `warmStart`.
+  bool coherence = true;
+  /// *Per-vector support hints.* Each stored separating vector keeps where its support
+  /// searches last ended, and the searches at \f$t_1\f$ along GJK's successive directions
+  /// start where the last one ended: hill climbing (§2.1) then takes a step or two instead
+  /// of a climb from the first vertex. The hints change where a climb starts, never where
+  /// it ends. (GJK's own climbs from one iteration to the next are GJK's, not a switch.)
+  bool supportHints = true;
+  /// *Reuse of the bracket's far end.* After a restart, Brent's bracket ends at the last
+  /// bracket's far end where the new vectors are below the tolerance there, instead of at
+  /// \f$t_1\f$: a first secant towards a far \f$t_1\f$ creeps (toi_refinements.hpp).
+  bool farEndReuse = true;
+  /// *The probe.* After a restart, a complete test where the exact distances of the last
+  /// complete tests extrapolate to the tolerance (the secant, or Muller's parabola), and
+  /// the proof of the interval up to it by the vectors found there: superlinear where the
+  /// restarts of §5 converge only linearly under rotation (toi_refinements.hpp).
+  bool probe = true;
+  /// *The leap.* After a restart that advanced less than a quarter of what is left of the
+  /// bracket, an iterate twice that advance ahead: it doubles the steps past a near miss's
+  /// minimum instead of creeping towards it (toi_refinements.hpp).
+  bool leap = true;
+  /// *The accepted band.* `acceptedDistance` and `acceptedAfter` end a grazing pass at
+  /// the first restart within the band; false ignores them (§5's criterion only).
+  bool acceptedBand = true;
+  /// *Moving apart at the start.* Bodies within the tolerance at \f$t_0\f$ that provably
+  /// move apart (their supporting distance along the closest direction rises and stays
+  /// positive) are reported `Separating`, not `StartsPenetrating`: a resting contact that
+  /// leaves needs no impulse. §5 assumes, by induction, bodies apart at \f$t_0\f$.
+  bool separatingAtStart = true;
+  /// *The query's frame.* Run the query in the frame of P (see `timeOfImpact`); false runs
+  /// it in world coordinates, as the paper does (the study's extreme cases show what that
+  /// costs in float far from the origin).
+  bool inFrameOfP = true;
+  /// *The query's clock.* Run the query on times \f$t - t_0\f$ (see `timeOfImpact`); false
+  /// runs it on the caller's clock, as the paper does (coarse in float far from t = 0).
+  bool onQueryClock = true;
+
+  /// §5 exactly as the paper wrote it: the paper's extrusion test, Brent's method on the
+  /// approximate maximum supporting distance, a cold complete test at every restart, and
+  /// no refinement (every switch above off, no accepted band).
+  static ToiSettings paper() {
+    ToiSettings settings;
+    settings.variant = ExtrusionVariant::Paper;
+    settings.acceptedDistance = S(0);
+    settings.acceptedAfter = 0;
+    settings.warmStart = settings.coherence = settings.supportHints = false;
+    settings.farEndReuse = settings.probe = settings.leap = settings.acceptedBand = false;
+    settings.separatingAtStart = settings.inFrameOfP = settings.onQueryClock = false;
+    return settings;
+  }
+  /// This project's solver: every refinement on (the default settings).
+  static ToiSettings gjkx() { return ToiSettings{}; }
+  /// The preset of `mode`.
+  static ToiSettings of(ToiSolverMode mode) { return mode == ToiSolverMode::Paper ? paper() : gjkx(); }
 };
 
 /// One Brent iterate of the solver, as chapter 05 draws it.

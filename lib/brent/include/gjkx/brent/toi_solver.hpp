@@ -84,7 +84,7 @@ class ToiSolver {
         accelerationQ_(S(Q.accelerationBound())),
         timeTolerance_(settings.timeTolerance * (t1 - t0)),
         extrusion_(extrusionSettings(settings)),
-        cache_(carried && settings.warmStart ? *carried : ExtrusionCache<S>{}),
+        cache_(carried && settings.warmStart && settings.coherence ? *carried : ExtrusionCache<S>{}),
         P1_(P.at(t1)),
         Q1_(Q.at(t1)),
         ta_(t0),
@@ -106,7 +106,7 @@ class ToiSolver {
     if (last_.status != ExtrusionStatus::Undecided) return verdictOfFirstTest();
     for (;;) {  // one Brent run per interval [ta, t1]: the first, then one per restart
       if (last_.separating.count == 0) return hit(ta_, last_);
-      if (result_.restarts > 0 && result_.brentIterations >= settings_.acceptedAfter &&
+      if (settings_.acceptedBand && result_.restarts > 0 && result_.brentIterations >= settings_.acceptedAfter &&
           last_.distanceAtStart <= settings_.acceptedDistance)
         return hit(ta_, last_);
       ProbeOutcome probed = probe();  // after a restart: straight to where the distance reaches the tolerance
@@ -165,6 +165,7 @@ class ToiSolver {
     extrusion.collisionTolerance = settings.collisionTolerance;
     extrusion.variant = settings.variant;
     extrusion.gjk = settings.gjk;
+    extrusion.supportHints = settings.supportHints;
     return extrusion;
   }
 
@@ -203,7 +204,8 @@ class ToiSolver {
         break;
       case ExtrusionStatus::CollidingAtStart:
         report(t0_, last_);
-        result_.status = movingApart() ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
+        result_.status =
+            settings_.separatingAtStart && movingApart() ? ToiStatus::Separating : ToiStatus::StartsPenetrating;
         break;
       case ExtrusionStatus::Undecided: break;  // not a verdict: solve() goes on to Brent
     }
@@ -235,7 +237,10 @@ class ToiSolver {
     const bool certified = settings_.variant == ExtrusionVariant::Certified;
     S best = -std::numeric_limits<S>::infinity();
     for (int k = 0; k < vectors.count; ++k) {
-      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k], vectors.hintP[k], vectors.hintQ[k]);
+      SupportHint coldP = 0, coldQ = 0;  // without supportHints every climb starts at the first vertex
+      const bool hinted = settings_.supportHints;
+      const S sd = supportingDistance(Pt, Qt, vectors.vectors[k], hinted ? vectors.hintP[k] : coldP,
+                                      hinted ? vectors.hintQ[k] : coldQ);
       best = std::max(best, certified ? std::min(sd, vectors.sdStart[k]) : sd);
     }
     result_.sdEvaluations += vectors.count;

@@ -44,6 +44,10 @@ struct ExtrusionSettings {
   ExtrusionVariant variant = ExtrusionVariant::Paper;
   /// Settings of the GJK run at \f$t_0\f$.
   GjkSettings<S> gjk;
+  /// Start each support search at \f$t_1\f$ where the last one ended (GJK's successive
+  /// directions turn little; beyond the paper, `ToiSettings::supportHints`); false starts
+  /// every one at the first vertex. The same verdict either way.
+  bool supportHints = true;
 };
 
 /// One step of the test, as a figure or a step-by-step test reads it.
@@ -199,6 +203,9 @@ ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P
   // from one iteration to the next: each search starts where the last one ended (speed;
   // the hints change where a climb starts, never where it ends).
   SupportHint endHintP = cache ? cache->endHintP : 0, endHintQ = cache ? cache->endHintQ : 0;
+  auto coldEndHints = [&] {  // without hints, every search at t1 starts at the first vertex
+    if (!settings.supportHints) endHintP = endHintQ = 0;
+  };
   auto keepEndHints = [&] {
     if (!cache) return;
     cache->endHintP = endHintP;
@@ -214,6 +221,7 @@ ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P
     ++result.sdEvaluations;
     step.separatesStart = step.sdStart > tol;
     if (step.sdStart > threshold) {
+      coldEndHints();
       step.sdEnd = supportingDistance(P1, Q1, step.s, endHintP, endHintQ);
       ++result.sdEvaluations;
       step.separatesEnd = step.sdEnd > threshold;
@@ -238,6 +246,7 @@ ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P
     step.sdStart = it.supportingDistance;
     step.separatesStart = step.sdStart > tol;
     if (step.separatesStart) {
+      coldEndHints();
       step.sdEnd = supportingDistance(P1, Q1, step.s, endHintP, endHintQ);
       ++result.sdEvaluations;
       step.separatesEnd = step.sdStart > threshold && step.sdEnd > threshold;

@@ -9,6 +9,7 @@
 /// than `tol` touch), so a scene at another scale keeps the same behaviour.
 #pragma once
 
+#include <gjkx/brent/toi_result.hpp>
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/mesh/convex_decomposition.hpp>
@@ -106,6 +107,12 @@ struct StepTuning {
 /// How a world is run: the solver's switches and the step's tunables (what a scene *is*
 /// stays in scene.hpp).
 struct WorldSettings {
+  /// The time-of-impact solver: §5 exactly as the paper wrote it (`ToiSettings::paper()`:
+  /// the paper's extrusion test whatever `variant` says, no warm starts, no coherence, no
+  /// accepted band, no refinement of Brent's bracket) or this project's (the default,
+  /// `ToiSettings::gjkx()`, with `variant`, `warmStarts`, `coherence` and the tuning's
+  /// accepted band).
+  ToiSolverMode solver = ToiSolverMode::Gjkx;
   /// The extrusion test of the solver: the paper's or the certified one (never misses
   /// under rotation; gjkx/extrusion/certified_margin.hpp). The default is certified.
   ExtrusionVariant variant = ExtrusionVariant::Certified;
