@@ -323,3 +323,50 @@ TEST_CASE("collision response rejects bad input", "[dynamics][impulse][input]") 
   const RigidBody wall = RigidBody::fixed();
   REQUIRE_THROWS_WITH(resolveCollision(wall, a, wall, b, c, {}), Contains("bodies"));
 }
+
+// An impulse step by step (Mirtich's integration over the normal impulse p_z, Stronge's
+// restitution), on a uniform ball of mass m and radius r hitting a static floor with normal
+// speed v_n = 1 and tangential speed v_t = 0.35 along x, no spin, mu = 0.4, e = 0.5. At the
+// contact point r = (0, 0, -r) from the centre, the collision matrix in the contact frame
+// is diagonal: K_tt = 1/m + r^2/J = (1 + 5/2)/m = 3.5/m (J = 2 m r^2 / 5), K_nn = 1/m.
+//  1. Sliding: the tangential impulse is -mu p_z along the slide, so
+//     u_t(p_z) = v_t - 3.5 mu p_z / m, zero at p_z = m v_t / (3.5 mu) = 0.25 m. There the
+//     sticking impulse (the one that keeps u_t = 0) has no tangential part (K is
+//     diagonal), inside the friction cone: the contact sticks, with tangential impulse
+//     -mu p_z = -0.1 m.
+//  2. Compression: u_n(p_z) = -v_n + p_z / m, zero at p_z = m v_n = m; the work done is
+//     W_c = int_0^m u_n dp_z = -m v_n^2 / 2 = -0.5 m.
+//  3. Restitution (Stronge): it ends when W = (1 - e^2) W_c = -0.375 m; after compression
+//     W = W_c + (p_z - m)^2 / (2m), so (p_z - m)^2 = m^2 e^2 v_n^2: p_z = m (1 + e) = 1.5 m,
+//     where u_n = e v_n = 0.5.
+// The ball leaves rolling: v_t' = v_t - 0.1 = 0.25 = (5/7) v_t, v_n' = 0.5.
+TEST_CASE("an impulse, step by step: sliding, sticking, compression and Stronge's restitution", "[dynamics][impulse][steps]") {
+  const RigidBody floor = RigidBody::fixed(), B = ball(0.5, 2.0);
+  const double m = 1 / B.inverseMass();
+  BodyState a = at(Eigen::Vector3d(0, 0, -1));
+  BodyState b = at(Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d(0.35, 0, -1));
+  const Contact c{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()};
+  ImpulseTrace trace;
+  const ImpulseResult r = resolveCollision(floor, a, B, b, c, {0.5, 0.4}, {}, &trace);
+  REQUIRE(r.status == ImpulseStatus::Collision);
+  REQUIRE(trace.changes.size() == 3);
+  const ImpulsePhaseChange& stop = trace.changes[0];
+  CHECK(stop.kind == ImpulsePhaseChange::Kind::SlidingStopped);
+  CHECK(stop.sticking);
+  CHECK(stop.normalImpulse == Approx(0.25 * m).epsilon(1e-5));
+  CHECK(stop.tangentialImpulse.norm() == Approx(0.1 * m).epsilon(1e-5));
+  CHECK(stop.normalVelocity == Approx(-1 + 0.25).epsilon(1e-5));
+  const ImpulsePhaseChange& compressed = trace.changes[1];
+  CHECK(compressed.kind == ImpulsePhaseChange::Kind::EndOfCompression);
+  CHECK(compressed.normalImpulse == Approx(m).epsilon(1e-9));
+  CHECK(compressed.work == Approx(-0.5 * m).epsilon(1e-9));
+  CHECK(std::abs(compressed.normalVelocity) < 1e-9);
+  const ImpulsePhaseChange& restituted = trace.changes[2];
+  CHECK(restituted.kind == ImpulsePhaseChange::Kind::EndOfRestitution);
+  CHECK(restituted.normalImpulse == Approx(1.5 * m).epsilon(1e-9));
+  CHECK(restituted.work == Approx((1 - 0.25) * compressed.work).epsilon(1e-9));  // Stronge: (1 - e^2) W_c
+  CHECK(restituted.normalVelocity == Approx(0.5).epsilon(1e-9));
+  CHECK(b.velocity.x() == Approx(0.25).epsilon(1e-5));
+  CHECK(b.velocity.z() == Approx(0.5).epsilon(1e-9));
+  CHECK(B.velocityAt(b, c.point).x() == Approx(0).margin(1e-6));  // rolling
+}

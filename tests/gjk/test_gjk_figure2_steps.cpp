@@ -1,5 +1,5 @@
 // Fig. 2, step by step: the 2D run of GJK that chapter 02_gjk draws, replayed
-// iteration by iteration against values derived by hand below.
+// step by step, iteration by iteration, against values derived by hand below.
 //
 // The scene (the same as chapters/02_gjk/main.cpp), in the plane z = 0:
 //   P: the quadrilateral (0,0) (5,0) (6,6) (0,5)
@@ -39,7 +39,7 @@ void requireXY(const V& actual, double x, double y) {
 
 }  // namespace
 
-TEST_CASE("Fig. 2: GJK in 2D, iteration by iteration", "[gjk][steps][fig2]") {
+TEST_CASE("Fig. 2: GJK in 2D, step by step", "[gjk][steps][fig2]") {
   const auto P = Polytope<double>::polygon({V(0, 0, 0), V(5, 0, 0), V(6, 6, 0), V(0, 5, 0)});
   const auto Q = Polytope<double>::polygon({V(11, 3, 0), V(12, 3, 0), V(14, 5, 0), V(9, 9, 0), V(10, 5, 0)});
   GjkSettings<double> settings;

@@ -282,3 +282,64 @@ TEST_CASE("a real mesh (Wuson, assimp-testmodels) against itself: BVH equals bru
   }
   CHECK(kept > 0);
 }
+
+// A traversal and a front update, step by step, on a hierarchy small enough to follow.
+// Body A: two unit cubes (as polytopes), piece 0 centred at the origin, piece 1 at
+// (4, 0, 0); its BVH is a root (node 0, their hull: x in [-0.5, 4.5], y and z in
+// [-0.5, 0.5]) over two leaves. Body B: one unit cube, a leaf. The 14-DOP's slabs 0, 1, 2
+// are x, y, z; a front node's side 2k says "B above A along slab k", 2k + 1 "A above B".
+//  1. B at (0, 2, 0): the root pair is apart along y (B's y from 1.5, A's up to 0.5: a gap
+//     of 1, side 2). The traversal stops there: 1 node visited, the front is that node,
+//     no piece pair survives.
+//  2. B at (0, 0.8, 0): the front node (root, B) is no longer apart: it is opened on A's
+//     side (B is a leaf): (leaf of piece 0, B) overlaps on every slab, a surviving pair
+//     (0, 0); (leaf of piece 1, B) is apart along x (A's piece from 3.5, B's up to 0.5: A
+//     above B, side 1). 3 nodes visited; the front is those two leaves.
+//  3. B at (0, 2, 0) again: the front's two nodes are tested (piece 0's now apart along y,
+//     side 2; piece 1's still along x, its side tried first), both apart with one parent,
+//     so the front climbs back: the root pair is tested (apart along y) and replaces them.
+//     3 nodes visited, 1 climb, the front is the root pair again, as in 1.
+TEST_CASE("a traversal and a front update, step by step, on a two-piece hierarchy", "[kdop][body_pair][steps]") {
+  using V = Vector3<double>;
+  std::vector<V> corners;
+  for (int k = 0; k < 8; ++k) corners.emplace_back(k & 1 ? 0.5 : -0.5, k & 2 ? 0.5 : -0.5, k & 4 ? 0.5 : -0.5);
+  const Polytope<double> cube = Polytope<double>::hull(corners);
+  std::vector<V> shifted;
+  for (const V& c : corners) shifted.push_back(c + V(4, 0, 0));
+  const Bvh<double> A({cube, Polytope<double>::hull(shifted)});
+  const Bvh<double> B({cube});
+  REQUIRE(A.nodes().size() == 3);
+  const int leaf0 = A.node(0).left, leaf1 = A.node(0).right;
+  REQUIRE(A.node(leaf0).piece == 0);
+  REQUIRE(A.node(leaf1).piece == 1);
+  BodyPairQuery<double> query(A, B);
+  const Pose<double> still = Pose<double>::identity();
+
+  const auto first = query.queryAt(still, Pose<double>::translate(V(0, 2, 0)));
+  CHECK(first.status == BodyPairStatus::Disjoint);
+  CHECK(first.counters.nodesVisited == 1);
+  REQUIRE(query.front().size() == 1);
+  CHECK(query.front()[0].a == Bvh<double>::root());
+  CHECK(query.front()[0].disjoint);
+  CHECK(query.front()[0].slab == 2);
+
+  const auto second = query.queryAt(still, Pose<double>::translate(V(0, 0.8, 0)));
+  CHECK(second.status == BodyPairStatus::PairsKept);
+  REQUIRE(second.pairs.size() == 1);
+  CHECK(second.pairs[0] == PiecePair{0, 0});
+  CHECK(second.counters.nodesVisited == 3);
+  REQUIRE(query.front().size() == 2);
+  CHECK(query.front()[0].a == leaf0);
+  CHECK_FALSE(query.front()[0].disjoint);
+  CHECK(query.front()[1].a == leaf1);
+  CHECK(query.front()[1].disjoint);
+  CHECK(query.front()[1].slab == 1);
+
+  const auto third = query.queryAt(still, Pose<double>::translate(V(0, 2, 0)));
+  CHECK(third.status == BodyPairStatus::Disjoint);
+  CHECK(third.counters.nodesVisited == 3);
+  CHECK(third.counters.climbs == 1);
+  REQUIRE(query.front().size() == 1);
+  CHECK(query.front()[0].a == Bvh<double>::root());
+  CHECK(query.front()[0].slab == 2);
+}

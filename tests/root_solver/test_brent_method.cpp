@@ -192,7 +192,7 @@ TEST_CASE("Brent on a linear function: one exact secant step", "[brent][root][ha
 // Iterate 3: a secant through (4/3, -2/9) and (149/105, 151/11025):
 //   x3 = 149/105 - (151/11025)(9/105) / (151/11025 + 2450/11025) = 149/105 - 453/91035
 //      = 8582/6069 = 1.41407150...   (sqrt(2) = 1.41421356...)
-TEST_CASE("BrentStepper on x^2 - 2 over [1, 2]: the first iterates by hand", "[brent][root][hand]") {
+TEST_CASE("Brent's method, step by step: the first iterates of BrentStepper on x^2 - 2 over [1, 2]", "[brent][root][hand][steps]") {
   const auto f = [](double x) { return x * x - 2.0; };
   BrentStepper<double> brent(1.0, f(1.0), 2.0, f(2.0), 1e-12);
   REQUIRE(!brent.converged());

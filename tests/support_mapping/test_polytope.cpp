@@ -281,6 +281,27 @@ TEST_CASE("hill climbing steps from a cold and a warm hint", "[polytope][climb]"
   CHECK(warm < 0.25 * cold);
 }
 
+// Hill climbing (§2.1), step by step, on Fig. 2's pentagon Q: (11,3) (12,3) (14,5) (9,9)
+// (10,5), counter-clockwise, so vertex k is adjacent to k - 1 and k + 1 (mod 5). Along
+// s = (-1, 0), from vertex 0 = (11,3) (s . x = -11): its neighbours are (12,3) (-12) and
+// (10,5) (-10); the best, (10,5), is better: move to vertex 4. Its neighbours (11,3) (-11)
+// and (9,9) (-9): move to vertex 3. Its neighbours (14,5) (-14) and (10,5) (-10) are both
+// worse: (9,9) is S_Q(-1, 0), the leftmost vertex. From the warm hint 3 the climb is that
+// vertex alone; along s = (1, 0) from vertex 3 it climbs (9,9) -> (14,5) (-> (12,3) is worse).
+TEST_CASE("hill climbing, step by step: Fig. 2's pentagon", "[polytope][climb][steps]") {
+  using V = Vec<double>;
+  const auto Q = Polytope<double>::polygon({V(11, 3, 0), V(12, 3, 0), V(14, 5, 0), V(9, 9, 0), V(10, 5, 0)});
+  REQUIRE(Q.vertexCount() == 5);
+  REQUIRE(Q.vertex(0) == V(11, 3, 0));
+  REQUIRE(Q.vertex(3) == V(9, 9, 0));
+  CHECK(Q.climbPath(V(-1, 0, 0), 0) == std::vector<int>{0, 4, 3});
+  CHECK(Q.climbPath(V(-1, 0, 0), 3) == std::vector<int>{3});
+  CHECK(Q.climbPath(V(1, 0, 0), 3) == std::vector<int>{3, 2});
+  SupportHint hint = 0;
+  CHECK(Q.support(V(-1, 0, 0), hint) == V(9, 9, 0));
+  CHECK(hint == 3);
+}
+
 // Polytope::polygon: points in the plane z = 0 give their convex hull as a polygon whose
 // vertices run counter-clockwise, each adjacent to the next, starting from the lowest
 // input index; interior points and a point in the middle of an edge are dropped.

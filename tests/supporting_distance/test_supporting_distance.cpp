@@ -88,10 +88,23 @@ TEMPLATE_TEST_CASE("the static test: disjoint, intersecting, and within the coll
   CHECK(intersect(P, at(S(4) * tol)).status == IntersectionStatus::Disjoint);      // farther than it
 }
 
-TEST_CASE("the static test stops at the first separating vector (Fig. 2 scene)", "[sd][static][fig2]") {
+// The supporting distance and the static test, step by step, on Fig. 2's scene (P the
+// quadrilateral (0,0) (5,0) (6,6) (0,5), Q the pentagon (11,3) (12,3) (14,5) (9,9) (10,5)):
+//  s_0 = (0, -1): S_P(s_0) is P's lowest vertex, s_0 . (0,0) = 0 (a tie with (5,0));
+//    S_Q(-s_0) = S_Q(0, 1), Q's highest, (9,9): SD = s_0 . (9,9) - 0 = -9: no separation.
+//  s_1 = (1, 1)/sqrt 2 (GJK's z = (9,9), normalised): S_P(s_1) = (6,6), s_1 . (6,6) = 12/sqrt 2;
+//    S_Q(-s_1) minimises x + y over Q: (11,3), 14 (the others 15, 15, 18, 19), so
+//    SD = (14 - 12)/sqrt 2 = sqrt 2 > tol: s_1 separates, and the boolean query stops there.
+TEST_CASE("the static test, step by step: SD along s_0 and s_1 of Fig. 2, and the stop at the first separating vector",
+          "[sd][static][fig2][steps]") {
   using V = Vector3<double>;
   const auto P = Polytope<double>::polygon({V(0, 0, 0), V(5, 0, 0), V(6, 6, 0), V(0, 5, 0)});
   const auto Q = Polytope<double>::polygon({V(11, 3, 0), V(12, 3, 0), V(14, 5, 0), V(9, 9, 0), V(10, 5, 0)});
+  CHECK(supportingDistance(P, Q, V(0, -1, 0)) == Approx(-9));
+  CHECK(Q.support(V(0, 1, 0)) == V(9, 9, 0));
+  CHECK(supportingDistance(P, Q, V(1, 1, 0).normalized()) == Approx(std::sqrt(2.0)));
+  CHECK(P.support(V(1, 1, 0)) == V(6, 6, 0));
+  CHECK(Q.support(V(-1, -1, 0)) == V(11, 3, 0));
   IntersectionSettings<double> settings;
   settings.gjk.initialDirection = V(0, -1, 0);
   const auto boolean = intersect(P, Q, settings);

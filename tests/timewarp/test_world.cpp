@@ -568,3 +568,94 @@ TEST_CASE("world: a cylinder dropped on its cap, and one dropped on its side, co
     CHECK(s.velocity.norm() < 1e-2);
   }
 }
+
+// Timewarp, step by step: three balls of radius 0.1 and equal mass on the x axis, no
+// gravity, restitution 1/2, no friction, one frame [0, 0.5] (frame rate 2). Ball 0 from
+// x = -0.5 at +2, ball 1 at rest at 0, ball 2 from 0.65 at -1.5. Times below ignore the
+// collision tolerance (each comes about tol / closing speed = 1e-4 s earlier). Equal
+// masses, e = 1/2: a collision leaves the pair with its mean velocity -/+ half the closing
+// speed over two.
+//  1. Every body runs ahead to the frame's end: each one's local time is 0.5. The pair
+//     checks queue (0,1) at 0.15 (gap 0.3 closing at 2), (0,2) at 0.2714 (0.95 at 3.5; ball
+//     0's path still runs through ball 1) and (1,2) at 0.3 (0.45 at 1.5).
+//  2. The global virtual time moves to the earliest event, (0,1) at 0.15: balls 0 and 1 roll
+//     back from 0.5 to 0.15 (ball 2 is left alone), leave at 0.5 and 1.5, and fly on to 0.5.
+//     Their pairs are checked again from 0.15: (1,2) at 0.225 (ball 2 at 0.425, gap 0.225
+//     closing at 3) and (0,2) at 0.3625 (gap 0.425 closing at 2).
+//  3. (1,2) at 0.225: balls 1 and 2 roll back to 0.225 and leave at -0.75 and 0.75. The
+//     re-check finds (0,1) at 0.285 (ball 0 at -0.1625, ball 1 at 0.1125: gap 0.075 closing
+//     at 1.25).
+//  4. (0,2) at 0.2714, queued in 1 on paths both collisions replaced: stale, dropped.
+//  5. (0,1) at 0.285: balls 0 and 1 roll back to 0.285 and leave at -0.4375 and 0.1875.
+//  6. (1,2) at 0.3 (from 1) and (0,2) at 0.3625 (from 2): stale, dropped.
+// Three collisions, three rollbacks, six events popped of which three were stale; the
+// global virtual time (each processed event's time) never goes back.
+TEST_CASE("Timewarp, step by step: three balls, each body's local time, its rollbacks, the stale events") {
+  const Scene scene = parseScene(R"({ "duration": 0.5, "frame_rate": 2, "gravity": [0, 0, 0], "restitution": 0.5,
+      "friction": 0, "scalar": "double", "bodies": [
+        { "name": "ball0", "shape": {"sphere": 0.1}, "position": [-0.5, 0, 0], "velocity": [2, 0, 0] },
+        { "name": "ball1", "shape": {"sphere": 0.1}, "position": [0, 0, 0] },
+        { "name": "ball2", "shape": {"sphere": 0.1}, "position": [0.65, 0, 0], "velocity": [-1.5, 0, 0] } ] })");
+  WorldSettings settings;
+  settings.trace = true;
+  World world(scene, settings);
+  const FrameReport report = world.step();
+  REQUIRE(world.done());
+  std::vector<TraceEvent> events;  // the trace without its pair checks
+  for (const TraceEvent& e : world.trace())
+    if (e.kind != TraceEvent::Kind::Check) events.push_back(e);
+  const double m = 1e-3;  // the tolerance's shift of every time, and more
+  using K = TraceEvent::Kind;
+  // 1. every body ahead to 0.5
+  REQUIRE(events.size() >= 3);
+  for (int b = 0; b < 3; ++b) {
+    CHECK(events[b].kind == K::Advance);
+    CHECK(events[b].body == b);
+    CHECK(events[b].from == 0);
+    CHECK(events[b].to == 0.5);
+  }
+  // 2, 3, 5: each collision, then a rollback of each of its bodies to its time and a flight
+  // from there to the frame's end.
+  struct Expected {
+    int i, j;
+    double time;
+  };
+  const Expected collisions[] = {{0, 1, 0.15}, {1, 2, 0.225}, {0, 1, 0.285}};
+  std::size_t k = 3;
+  double virtualTime = 0;
+  for (const Expected& c : collisions) {
+    INFO("collision of " << c.i << " and " << c.j << " at " << c.time);
+    REQUIRE(k < events.size());
+    CHECK(events[k].kind == K::Collision);
+    CHECK(events[k].body == c.i);
+    CHECK(events[k].other == c.j);
+    CHECK(events[k].to == Approx(c.time).margin(m));
+    CHECK(events[k].to >= virtualTime);  // the global virtual time never goes back
+    virtualTime = events[k].to;
+    ++k;
+    int rolledBack = 0, flown = 0;
+    for (; k < events.size() && events[k].kind != K::Collision; ++k) {
+      CHECK((events[k].body == c.i || events[k].body == c.j));  // the third ball is left alone
+      if (events[k].kind == K::Rollback) {
+        ++rolledBack;
+        CHECK(events[k].from == 0.5);  // its local time was the frame's end
+        CHECK(events[k].to == virtualTime);
+      } else if (events[k].kind == K::Advance) {
+        ++flown;
+        CHECK(events[k].from == virtualTime);
+        CHECK(events[k].to == 0.5);
+      }
+    }
+    CHECK(rolledBack == 2);
+    CHECK(flown == 2);
+  }
+  CHECK(k == events.size());
+  CHECK(report.counters.collisions == 3);
+  CHECK(report.counters.rollbacks == 3);
+  // 4 and 6: six events popped, three of them stale and dropped.
+  CHECK(report.counters.events == 6);
+  // Each ball's final velocity, as the three collisions above leave it.
+  CHECK(world.stateOf(0).velocity.x() == Approx(-0.4375).epsilon(1e-6));
+  CHECK(world.stateOf(1).velocity.x() == Approx(0.1875).epsilon(1e-6));
+  CHECK(world.stateOf(2).velocity.x() == Approx(0.75).epsilon(1e-6));
+}

@@ -167,7 +167,7 @@ void ImpulseSettings::validate(const std::string& field) const {
 
 ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b,
                                const Contact& contact, const CollisionMaterial& material,
-                               const ImpulseSettings& settings) {
+                               const ImpulseSettings& settings, ImpulseTrace* trace) {
   a.validate("a");
   b.validate("b");
   requireFinite(contact.point, "contact.point");
@@ -241,6 +241,18 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     plain.do_step(c, s, from, length);
   };
   int steps = 0;
+  // The trace's record of a phase change, in the caller's units (the state is scaled by P and U).
+  auto record = [&](ImpulsePhaseChange::Kind kind) {
+    if (!trace) return;
+    ImpulsePhaseChange change;
+    change.kind = kind;
+    change.normalImpulse = P * sigma;
+    change.tangentialImpulse = P * Eigen::Vector2d(y[0], y[1]);
+    change.work = P * U * y[2];
+    change.normalVelocity = U * c.velocity(y, sigma).z();
+    change.sticking = c.friction == Friction::Sticking;
+    trace->changes.push_back(change);
+  };
 
   // Sliding has stopped (|u_t| within the tolerance): close the remainder with the
   // tangential impulse -A^-1 u_t, then stick or slide on along the ray.
@@ -250,6 +262,7 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
     y[0] += dp.x();
     y[1] += dp.y();
     c.tangentialStop();
+    record(ImpulsePhaseChange::Kind::SlidingStopped);
   };
 
   // The events that end the current stretch of the integration, each a continuous function
@@ -302,10 +315,12 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
       if (un < 0) advance(-un / k);
       wTarget = (1 - e * e) * y[2];
       phase = Phase::Restitution;
+      record(ImpulsePhaseChange::Kind::EndOfCompression);
     }
     const double un = std::max(0.0, c.velocity(y, sigma).z());
     if (y[2] < wTarget) advance((-un + std::sqrt(un * un + 2 * k * (wTarget - y[2]))) / k);
     phase = Phase::Done;
+    record(ImpulsePhaseChange::Kind::EndOfRestitution);
   };
 
   while (phase != Phase::Done) {
@@ -384,9 +399,11 @@ ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody
       // End of compression: W_c = w now; restitution ends at (1 - e^2) W_c (Stronge).
       wTarget = (1 - e * e) * y[2];
       phase = Phase::Restitution;
+      record(ImpulsePhaseChange::Kind::EndOfCompression);
       if (y[2] >= wTarget) phase = Phase::Done;  // e = 0: no restitution
     }
     if (phase == Phase::Restitution && (ev & kRestituted)) phase = Phase::Done;
+    if (phase == Phase::Done) record(ImpulsePhaseChange::Kind::EndOfRestitution);
     c(y, dydsigma, sigma);
   }
   result.integratorSteps = steps;

@@ -46,6 +46,7 @@
 #include <gjkx/dynamics/rigid_body.hpp>
 
 #include <string>
+#include <vector>
 
 namespace gjkx {
 
@@ -127,13 +128,42 @@ struct ImpulseResult {
   int integratorSteps = 0;
 };
 
+/// One phase change of a collision, as a step-by-step test reads it (`ImpulseTrace`).
+struct ImpulsePhaseChange {
+  /// What changed.
+  enum class Kind {
+    SlidingStopped,    ///< the tangential velocity reached zero: the contact sticks, or slides on along Mirtich's ray
+    EndOfCompression,  ///< \f$u_n\f$ reached zero: the work done so far is \f$W_c\f$
+    EndOfRestitution,  ///< \f$W_z\f$ reached \f$(1 - e^2)\,W_c\f$ (Stronge): the collision ends
+  };
+  /// What changed.
+  Kind kind = Kind::EndOfCompression;
+  /// The normal impulse \f$p_z\f$ applied so far (N s).
+  double normalImpulse = 0;
+  /// The tangential impulse applied so far, in the contact frame's two tangent directions (N s).
+  Eigen::Vector2d tangentialImpulse = Eigen::Vector2d::Zero();
+  /// The normal work \f$W_z = \int u_n\,dp_z\f$ done so far (J).
+  double work = 0;
+  /// The relative normal velocity \f$u_n\f$ there (m/s).
+  double normalVelocity = 0;
+  /// True when the contact sticks from here on (for `SlidingStopped`).
+  bool sticking = false;
+};
+
+/// A caller-owned record of one collision's phase changes, in order (for the tests).
+struct ImpulseTrace {
+  /// The phase changes, in order.
+  std::vector<ImpulsePhaseChange> changes;
+};
+
 /// Resolves a collision of A and B at `contact`: integrates the impulse (see the file
 /// comment) and updates the velocities of `a` and `b` (a static body's are left alone).
 /// Throws std::invalid_argument naming the field: "a...", "b...", "contact.point",
 /// "contact.normal" (finite, unit), "material.restitution" (in [0, 1]), "material.friction"
-/// (not negative), "settings...", "bodies" (both static).
+/// (not negative), "settings...", "bodies" (both static). `trace`, when given, records
+/// each phase change (sliding stopped, end of compression, end of restitution).
 ImpulseResult resolveCollision(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b,
                                const Contact& contact, const CollisionMaterial& material,
-                               const ImpulseSettings& settings = {});
+                               const ImpulseSettings& settings = {}, ImpulseTrace* trace = nullptr);
 
 }  // namespace gjkx
