@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -74,8 +75,11 @@ struct Run {
   ToiTrace<double> trace;
 };
 
+// The solver the figures run (--solver): this project's by default, or §5 as the paper wrote it.
+ToiSolverMode solverMode = ToiSolverMode::Gjkx;
+
 Run solve(const Body& P, const Body& Q) {
-  ToiSettings<double> settings;
+  ToiSettings<double> settings = ToiSettings<double>::of(solverMode);
   settings.collisionTolerance = kTol;
   Run run;
   run.result = timeOfImpact(P, Q, 0.0, 1.0, settings, &run.trace);
@@ -309,7 +313,19 @@ void traceTables(Canvas& canvas, double x, double y, const Run& run) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".", solver = "gjkx";
+  {
+    CLI::App app{"Draws chapter 05's figures in DIR: the time of impact, the photo finish and Brent's method."};
+    chapter::addFigureOptions(app, out);
+    app.add_option("--solver", solver,
+                   "the time-of-impact solver of the figures: this project's (gjkx) or §5 exactly as the paper "
+                   "wrote it (paper: ToiSettings::paper())")
+        ->check(CLI::IsMember({"paper", "gjkx"}))
+        ->capture_default_str();
+    chapter::parseOrExit(app, argc, argv);
+    std::filesystem::create_directories(out);
+    solverMode = solver == "paper" ? ToiSolverMode::Paper : ToiSolverMode::Gjkx;
+  }
   auto polygon = [](const std::vector<V>& corners) { return Polytope<double>::polygon(corners); };
   const Motion<double> atRest = Motion<double>::fixed(Pose<double>::identity());
 
