@@ -199,7 +199,10 @@ TEST_CASE("scene: a decomposed mesh is reported once, and a budget given to buil
   std::vector<std::string> lines;
   MeshBuildOptions options;
   options.cache = "";
-  options.report = [&](const std::string& line) { lines.push_back(line); };
+  options.report = [&](const std::string& line, const DecompositionReport& report) {
+    lines.push_back(line);
+    CHECK(report.pieces == 1);
+  };
   const std::vector<WorldBody> bodies = buildBodies(scene, 0.05, options);
   REQUIRE(lines.size() == 1);  // two bodies, one mesh used one way: one decomposition, one report
   CHECK_THAT(lines[0], Catch::StartsWith("cube.off: 1 convex piece,") && Catch::Contains("volume excess"));

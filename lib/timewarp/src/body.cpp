@@ -91,7 +91,7 @@ ConvexDecomposition decomposeReported(const TriangleMesh& mesh, DecompositionSet
   if (options.progress) observer = [&](const DecompositionProgress& p) { options.progress(name, p); };
   ConvexDecomposition d = decompose(mesh, settings, options.cache, observer);
   const std::string line = describe(d.report, name);
-  if (options.report) options.report(line);
+  if (options.report) options.report(line, d.report);
   else std::fprintf(stderr, "gjkx: %s\n", line.c_str());
   return d;
 }

@@ -100,9 +100,10 @@ struct MeshBuildOptions {
   /// Called about ten times a second while a mesh is decomposed, with the mesh's file (a
   /// progress bar); unset: nothing.
   std::function<void(const std::string& mesh, const DecompositionProgress&)> progress;
-  /// Where the one-line report of each decomposed mesh goes (gjkx::describe: pieces,
-  /// vertices per piece, volume excess, time or "cached"), once per mesh; unset: standard error.
-  std::function<void(const std::string& line)> report;
+  /// Where the report of each decomposed mesh goes, once per mesh: its line (gjkx::describe:
+  /// pieces, vertices per piece, volume excess, time or "cached") and its numbers; unset:
+  /// the line on standard error.
+  std::function<void(const std::string& line, const DecompositionReport& report)> report;
 };
 
 /// The bodies of `scene`: each shape read (a mesh through Assimp, decomposed once however
