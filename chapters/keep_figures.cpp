@@ -1,12 +1,11 @@
 // gjkx_keep_figures NEW KEPT: brings the figures the chapters just drew in NEW into the
 // kept folder KEPT (figures/), rewriting a kept PNG only when the new one differs beyond
-// the figure tests' tolerance (gjkx::render::keptFigureTolerance), and any other file
+// the figure tests' tolerance (kept::kTolerance, kept_figures.hpp), and any other file
 // (the data of a plot) only when its bytes differ. So regenerating the figures on another
 // machine, whose rasteriser may round the last bit of an edge otherwise, leaves figures/
 // (and git status) untouched, and a figure that really changed is rewritten.
 #include "command_line.hpp"
-
-#include <gjkx/render/image.hpp>
+#include "kept_figures.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -38,8 +37,8 @@ int main(int argc, char** argv) {
     bool same = fs::exists(target);
     std::string how = "new";
     if (same && entry.path().extension() == ".png") {
-      const auto diff = gjkx::render::compareImages(gjkx::render::readPng(target.string()), gjkx::render::readPng(entry.path().string()));
-      same = diff.within(gjkx::render::keptFigureTolerance);
+      const kept::Diff diff = kept::compare(kept::readPng(target.string()), kept::readPng(entry.path().string()));
+      same = diff.same();
       char percent[64];
       std::snprintf(percent, sizeof percent, "%.2f%% of the pixels differ", diff.differingFraction * 100);
       how = diff.sameSize ? percent : "another size";

@@ -1,8 +1,8 @@
 // The kept figures are what the chapters draw: regenerate every figure into a
 // temporary folder and compare it with the PNG kept in figures/, within the kept
-// figures' tolerance (gjkx::render::keptFigureTolerance: another machine's rasteriser or
-// font library may round the last bit of an edge's coverage otherwise).
-#include <gjkx/render/image.hpp>
+// figures' tolerance (kept::kTolerance, chapters/kept_figures.hpp: another machine's
+// rasteriser or font library may round the last bit of an edge's coverage otherwise).
+#include "kept_figures.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -44,7 +44,7 @@ std::set<std::string> pngsIn(const fs::path& dir) {
 }  // namespace
 
 TEST_CASE("every chapter redraws its kept figures within a small pixel tolerance", "[figures]") {
-  const fs::path kept = GJKX_KEPT_FIGURES;
+  const fs::path keptDir = GJKX_KEPT_FIGURES;
   std::set<std::string> regenerated;
   for (const std::string& program : chapterPrograms()) {
     const fs::path out = freshFolder(fs::path(program).filename().string());
@@ -56,30 +56,29 @@ TEST_CASE("every chapter redraws its kept figures within a small pixel tolerance
     for (const std::string& name : names) {
       INFO("figure " << name << " from " << program);
       regenerated.insert(name);
-      REQUIRE(fs::exists(kept / name));  // a new figure must be kept in figures/
-      const auto diff = gjkx::render::compareImages(gjkx::render::readPng((kept / name).string()),
-                                                    gjkx::render::readPng((out / name).string()));
+      REQUIRE(fs::exists(keptDir / name));  // a new figure must be kept in figures/
+      const kept::Diff diff = kept::compare(kept::readPng((keptDir / name).string()), kept::readPng((out / name).string()));
       INFO("differing pixels: " << diff.differingPixels << " (" << diff.differingFraction * 100 << "%), max channel "
                                 << diff.maxChannelDifference);
-      CHECK(diff.within(gjkx::render::keptFigureTolerance));
+      CHECK(diff.same());
     }
     fs::remove_all(out);
   }
   // And no kept figure is left without a chapter that draws it (when every chapter was
   // built: a build without OSMesa leaves out those with 3D figures).
   if (!GJKX_ALL_CHAPTERS_BUILT) return;
-  for (const std::string& name : pngsIn(kept)) {
+  for (const std::string& name : pngsIn(keptDir)) {
     INFO("kept figure " << name << " is drawn by no chapter");
     CHECK(regenerated.count(name) == 1);
   }
 }
 
 TEST_CASE("figures/README.md lists every kept figure", "[figures]") {
-  const fs::path kept = GJKX_KEPT_FIGURES;
-  std::ifstream readme(kept / "README.md");
+  const fs::path keptDir = GJKX_KEPT_FIGURES;
+  std::ifstream readme(keptDir / "README.md");
   REQUIRE(readme.good());
   const std::string text((std::istreambuf_iterator<char>(readme)), std::istreambuf_iterator<char>());
-  for (const std::string& name : pngsIn(kept)) {
+  for (const std::string& name : pngsIn(keptDir)) {
     INFO(name << " is missing from figures/README.md");
     CHECK(text.find(name) != std::string::npos);
   }

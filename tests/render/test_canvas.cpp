@@ -1,7 +1,8 @@
-// Tests of the renderer that draws the paper's figures: determinism, fills,
-// anti-aliasing, text markup, PNG round trips, 3D depth testing, bad input.
+// Tests of the renderer that draws the paper's figures: determinism, fills, antialiasing,
+// text markup, PNG, SVG and PDF, the kept figures' comparison, 3D depth testing, bad input.
+#include "kept_figures.hpp"
+
 #include <gjkx/render/canvas.hpp>
-#include <gjkx/render/image.hpp>
 #include <gjkx/render/text.hpp>
 
 #include <catch2/catch.hpp>
@@ -55,6 +56,20 @@ Mesh cube() {
   return m;
 }
 
+// What a canvas draws, read back from the PNG it writes.
+struct Drawn {
+  kept::Pixels pixels;
+  std::array<std::uint8_t, 4> pixel(int x, int y) const { return pixels.rgba(x, y); }
+};
+
+Drawn drawn(Canvas& c) {
+  const std::string path = tempPath("drawn.png");
+  c.save(path);
+  Drawn d{kept::readPng(path)};
+  std::remove(path.c_str());
+  return d;
+}
+
 bool isWhite(const std::array<std::uint8_t, 4>& p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; }
 
 int expectedBlend(double fill, double alpha) { return static_cast<int>(std::lround(255.0 * (1.0 - alpha + fill * alpha))); }
@@ -62,39 +77,42 @@ int expectedBlend(double fill, double alpha) { return static_cast<int>(std::lrou
 }  // namespace
 
 TEST_CASE("drawing the same scene twice gives identical pixels and PNG bytes", "[render]") {
-  Image first, second;
+  Drawn first, second;
   {
     Canvas a(160, 120);
     drawScene(a);
-    first = a.image();
+    first = drawn(a);
     a.save(tempPath("det_a.png"));
   }
   {
     Canvas b(160, 120);
     drawScene(b);
-    second = b.image();
+    second = drawn(b);
     b.save(tempPath("det_b.png"));
   }
-  REQUIRE(first.width == 160);
-  REQUIRE(first.height == 120);
-  CHECK(first.rgba == second.rgba);
+  REQUIRE(first.pixels.width == 160);
+  REQUIRE(first.pixels.height == 120);
+  CHECK(first.pixels.argb == second.pixels.argb);
   const auto bytesA = fileBytes(tempPath("det_a.png"));
   CHECK(!bytesA.empty());
   CHECK(bytesA == fileBytes(tempPath("det_b.png")));
   // Something was drawn at all.
-  CHECK(compareImages(first, Image(160, 120)).differingPixels > 500);
+  int inked = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 160; ++x) inked += !isWhite(first.pixel(x, y));
+  CHECK(inked > 500);
   std::remove(tempPath("det_a.png").c_str());
   std::remove(tempPath("det_b.png").c_str());
 }
 
 TEST_CASE("many canvases one after another and side by side", "[render]") {
-  Image reference;
+  Drawn reference;
   for (int i = 0; i < 12; ++i) {
     Canvas c(160, 120);
     drawScene(c);
-    const Image img = c.image();
+    const Drawn img = drawn(c);
     if (i == 0) reference = img;
-    else CHECK(img.rgba == reference.rgba);
+    else CHECK(img.pixels.argb == reference.pixels.argb);
   }
   // Two live canvases drawn alternately keep their own contexts.
   Canvas x(160, 120), y(160, 120);
@@ -102,14 +120,14 @@ TEST_CASE("many canvases one after another and side by side", "[render]") {
   y.setWorldWindow(0, 10, 0, 10);
   x.polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ShapeStyle{Color::hex(0xFF0000), style::noStroke});
   y.polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ShapeStyle{Color::hex(0x0000FF), style::noStroke});
-  const auto px = x.image().pixel(80, 60), py = y.image().pixel(80, 60);
+  const auto px = drawn(x).pixel(80, 60), py = drawn(y).pixel(80, 60);
   CHECK(px[0] == 255);
   CHECK(px[2] == 0);
   CHECK(py[0] == 0);
   CHECK(py[2] == 255);
   // A moved canvas keeps working.
   Canvas moved = std::move(x);
-  CHECK(moved.image().pixel(10, 10)[0] == 255);
+  CHECK(drawn(moved).pixel(10, 10)[0] == 255);
 }
 
 TEST_CASE("a translucent polygon covers its inside with its fill blended on white", "[render]") {
@@ -117,7 +135,7 @@ TEST_CASE("a translucent polygon covers its inside with its fill blended on whit
   c.setWorldWindow(0, 10, 0, 10);
   const Color fill = palette::bodyPFill;
   c.polygon({{2, 2}, {8, 2}, {8, 8}, {2, 8}}, ShapeStyle{fill, style::bodyPStroke});
-  const Image img = c.image();
+  const Drawn img = drawn(c);
   const auto inside = img.pixel(50, 50);
   CHECK(std::abs(inside[0] - expectedBlend(fill.r, fill.a)) <= 2);
   CHECK(std::abs(inside[1] - expectedBlend(fill.g, fill.a)) <= 2);
@@ -131,7 +149,7 @@ TEST_CASE("a translucent polygon covers its inside with its fill blended on whit
   Canvas d(100, 100);
   d.setWorldWindow(0, 10, 0, 10);
   d.polygon({{1, 1}, {9, 1}, {9, 9}, {5, 3}, {1, 9}}, ShapeStyle{Color::hex(0x000000), style::noStroke});
-  const Image notch = d.image();
+  const Drawn notch = drawn(d);
   CHECK(isWhite(notch.pixel(50, 20)));        // world (5, 8): inside the notch
   CHECK(notch.pixel(50, 80)[0] < 10);         // world (5, 2): inside the polygon
   CHECK(notch.pixel(20, 50)[0] < 10);         // world (2, 5): inside the left lobe
@@ -141,10 +159,10 @@ TEST_CASE("a diagonal line is anti-aliased", "[render]") {
   Canvas c(100, 100);
   c.setWorldWindow(0, 10, 0, 10);
   c.line({1, 1}, {9, 6}, Stroke{palette::ink, 1.5, {}});
-  const Image img = c.image();
+  const Drawn img = drawn(c);
   int intermediate = 0, dark = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
+  for (int y = 0; y < img.pixels.height; ++y)
+    for (int x = 0; x < img.pixels.width; ++x) {
       const int v = img.pixel(x, y)[0];
       if (v > 20 && v < 235) ++intermediate;
       if (v <= 100) ++dark;
@@ -165,7 +183,7 @@ TEST_CASE("drawing is clipped to the panel, or to a narrower clip rectangle", "[
   const PixelRect plot = c.plotArea();
   CHECK(plot.x == 10);
   CHECK(plot.y == 30);
-  const Image img = c.image();
+  const Drawn img = drawn(c);
   const Eigen::Vector2d v5 = c.toPixel({5, 5}), v2 = c.toPixel({2, 2});
   const int col5 = static_cast<int>(std::lround(v5.x())), col2 = static_cast<int>(std::lround(v2.x()));
   CHECK(img.pixel(col5, 2)[0] < 60);             // unclipped line reaches the panel's top edge
@@ -191,11 +209,11 @@ TEST_CASE("labels are typeset with subscripts and drawn in their box", "[render]
 
   Canvas c(120, 80);
   c.textAtPixel(60, 40, "V_P", mathLabel, Anchor::Center);
-  const Image img = c.image();
+  const Drawn img = drawn(c);
   const TextExtent e = measureText("V_P", Font::Math, mathLabel.size);
   int changedInside = 0, changedOutside = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
+  for (int y = 0; y < img.pixels.height; ++y)
+    for (int x = 0; x < img.pixels.width; ++x) {
       // Antialiasing may touch the pixel beyond a fractional edge of the ink box.
       const bool inBox = std::abs(x - 60) <= e.width() / 2 + 2 && std::abs(y - 40) <= e.height() / 2 + 2;
       if (!isWhite(img.pixel(x, y))) ++(inBox ? changedInside : changedOutside);
@@ -228,64 +246,59 @@ TEST_CASE("a figure is written as PNG, SVG or PDF by its extension", "[render]")
   CHECK(starts(tempPath("out.png"), "\x89PNG"));
   CHECK(starts(tempPath("out.svg"), "<?xml"));
   CHECK(starts(tempPath("out.pdf"), "%PDF"));
-  CHECK(compareImages(readPng(tempPath("out.png")), c.image(), 0).differingPixels == 0);
+  CHECK(kept::compare(kept::readPng(tempPath("out.png")), drawn(c).pixels, 0).differingPixels == 0);
   for (const char* ext : {"png", "svg", "pdf"}) std::remove(tempPath(std::string("out.") + ext).c_str());
   CHECK_THROWS_AS(c.save(tempPath("out.jpg")), std::invalid_argument);
   CHECK_THROWS_AS(c.save(tempPath("no_such_dir/out.svg")), std::runtime_error);
 }
 
-TEST_CASE("PNG files round trip and compareImages finds differences", "[render]") {
+TEST_CASE("kept figures: a PNG read back, compared pixel by pixel within the tolerance", "[render]") {
   Canvas c(160, 120);
   drawScene(c);
-  const Image img = c.image();
-  const std::string path = tempPath("roundtrip.png");
-  writePng(img, path);
-  const Image back = readPng(path);
-  const ImageDiff same = compareImages(img, back, 0);
+  const kept::Pixels img = drawn(c).pixels;
+  const kept::Diff same = kept::compare(img, img, 0);
   CHECK(same.sameSize);
   CHECK(same.differingPixels == 0);
   CHECK(same.maxChannelDifference == 0);
-  CHECK(same.within(0.0));
+  CHECK(same.same());
 
-  Image changed = back;
-  changed.setPixel(10, 10, {0, 0, 0, 255});
-  changed.setPixel(11, 10, {250, 250, 250, 255});  // small change: below a threshold of 8
-  const ImageDiff diff = compareImages(img, changed, 8);
+  kept::Pixels changed = img;
+  changed.argb[10 * 160 + 10] = 0xFF000000u;  // black
+  changed.argb[10 * 160 + 11] = 0xFFFAFAFAu;  // a small change: within the threshold of a white pixel
+  const kept::Diff diff = kept::compare(img, changed);
   CHECK(diff.sameSize);
   CHECK(diff.differingPixels == 1);
   CHECK(diff.maxChannelDifference >= 200);
   CHECK(diff.differingFraction == Approx(1.0 / (160.0 * 120.0)));
-  CHECK(!diff.within(0.0));
-  CHECK(diff.within(0.001));
-  CHECK_FALSE(compareImages(img, Image(10, 10)).sameSize);
-  std::remove(path.c_str());
+  CHECK(diff.same());  // one pixel of 19,200 is within kTolerance
+  kept::Pixels smaller = img;
+  smaller.width = 10;
+  CHECK_FALSE(kept::compare(img, smaller).same());
 
   const std::string missing = tempPath("no_such_dir/none.png");
   try {
-    readPng(missing);
+    kept::readPng(missing);
     FAIL("readPng of a missing file must throw");
   } catch (const std::runtime_error& e) {
     CHECK(std::string(e.what()).find(missing) != std::string::npos);
   }
-  CHECK_THROWS_AS(writePng(img, missing), std::runtime_error);
   const std::string notPng = tempPath("not_a_png.png");
   std::ofstream(notPng) << "hello";
-  CHECK_THROWS_AS(readPng(notPng), std::runtime_error);
+  CHECK_THROWS_AS(kept::readPng(notPng), std::runtime_error);
   std::remove(notPng.c_str());
 }
 
 TEST_CASE("a lit cube is drawn and the depth test hides what is behind", "[render]") {
   Canvas c(120, 120);
   if (!canDraw3d()) {  // a build without OSMesa says so when a 3D figure is written
-    c.setCamera(Camera::fromMatrices(lookAt({3, 2.5, 2}, {0, 0, 0}, {0, 0, 1}), perspective(0.8, 1, 0.1, 20)));
+    c.setCamera(Camera{lookAt({3, 2.5, 2}, {0, 0, 0}, {0, 0, 1}), perspective(0.8, 1, 0.1, 20)});
     c.mesh(cube(), MeshStyle{});
-    CHECK_THROWS_AS(c.image(), std::runtime_error);
+    CHECK_THROWS_AS(drawn(c), std::runtime_error);
     return;
   }
-  c.setCamera(Camera::fromMatrices(lookAt({3, 2.5, 2}, {0, 0, 0}, {0, 0, 1}),
-                                   perspective(0.8, c.plotAspect(), 0.1, 20)));
+  c.setCamera(Camera{lookAt({3, 2.5, 2}, {0, 0, 0}, {0, 0, 1}), perspective(0.8, c.plotAspect(), 0.1, 20)});
   c.mesh(cube(), MeshStyle{});
-  const Image cube = c.image();
+  const Drawn cube = drawn(c);
   CHECK(!isWhite(cube.pixel(60, 60)));
   CHECK(isWhite(cube.pixel(2, 2)));
   // Faces at different angles to the light get different shades.
@@ -300,7 +313,7 @@ TEST_CASE("a lit cube is drawn and the depth test hides what is behind", "[rende
 
   const auto centreAfter = [](bool redFirst) {
     Canvas d(80, 80);
-    d.setCamera(Camera::fromMatrices(lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}), perspective(1.0, 1.0, 0.5, 50)));
+    d.setCamera(Camera{lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}), perspective(1.0, 1.0, 0.5, 50)});
     Mesh red, blue;
     red.vertices = {{-5, -5, -10}, {5, -5, -10}, {0, 5, -10}};
     red.triangles = {{0, 1, 2}};
@@ -315,7 +328,7 @@ TEST_CASE("a lit cube is drawn and the depth test hides what is behind", "[rende
       d.mesh(blue, blueStyle);
       d.mesh(red, redStyle);
     }
-    return d.image().pixel(40, 40);
+    return drawn(d).pixel(40, 40);
   };
   const auto a = centreAfter(true), b = centreAfter(false);
   CHECK(a[2] == 255);
@@ -339,7 +352,6 @@ TEST_CASE("invalid sizes throw std::invalid_argument naming the field", "[render
   };
   CHECK(message([] { Canvas c(0, 10); }).find("width") != std::string::npos);
   CHECK(message([] { Canvas c(10, -1); }).find("height") != std::string::npos);
-  CHECK(message([] { Image i(-3, 4); }).find("width") != std::string::npos);
   Canvas c(50, 50);
   CHECK(message([&] { c.setPanel({0, 0, 0, 10}); }).find("width") != std::string::npos);
   CHECK(message([&] { c.setWorldWindow(1, 1, 0, 1); }).find("xmax") != std::string::npos);

@@ -17,14 +17,11 @@ Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target
 /// 0 < nearPlane < farPlane.
 Eigen::Matrix4d perspective(double fovyRadians, double aspect, double nearPlane, double farPlane);
 
-/// A camera of a 3D figure panel: a view matrix (world to eye) and a projection matrix
-/// (eye to OpenGL clip space).
+/// A camera of a 3D figure panel: a view matrix (world to eye, e.g. lookAt()) and a
+/// projection matrix (eye to OpenGL clip space, e.g. perspective()).
 struct Camera {
   Eigen::Matrix4d view = Eigen::Matrix4d::Identity();        ///< World to eye coordinates.
   Eigen::Matrix4d projection = Eigen::Matrix4d::Identity();  ///< Eye to clip coordinates.
-
-  /// A camera from a view matrix (e.g. lookAt()) and a projection matrix (e.g. perspective()).
-  static Camera fromMatrices(const Eigen::Matrix4d& viewMatrix, const Eigen::Matrix4d& projectionMatrix);
 
   /// A perspective camera on a sphere around @p target, the usual view of a body in the 3D
   /// figures: @p azimuthRadians turns about the world z axis from the x axis,
@@ -33,8 +30,6 @@ struct Camera {
   static Camera orbit(const Eigen::Vector3d& target, double radius, double azimuthRadians, double elevationRadians,
                       double fovyRadians, double aspect);
 
-  /// True if the projection is orthographic (no perspective division).
-  bool isOrthographic() const { return projection(3, 2) == 0.0 && projection(3, 3) != 0.0; }
   /// Position of the eye in world coordinates.
   Eigen::Vector3d eye() const;
 };

@@ -24,11 +24,6 @@ struct Color {
   constexpr bool invisible() const { return a <= 0.0; }
 };
 
-/// Exact component-wise equality of two colours.
-constexpr bool operator==(const Color& x, const Color& y) { return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a; }
-/// Component-wise inequality of two colours.
-constexpr bool operator!=(const Color& x, const Color& y) { return !(x == y); }
-
 /// The colour a fraction @p t of the way from @p x to @p y (t = 0 gives x).
 constexpr Color mix(const Color& x, const Color& y, double t) {
   return Color{x.r + (y.r - x.r) * t, x.g + (y.g - x.g) * t, x.b + (y.b - x.b) * t, x.a + (y.a - x.a) * t};

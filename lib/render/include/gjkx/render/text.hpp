@@ -6,12 +6,9 @@
 ///
 /// | markup | meaning |
 /// |--------|---------|
-/// | V_P, s_{12} | subscript (one character or a braced group) |
-/// | 10^4, s_1^2 | superscript |
-/// | \$...\$ | switches math style on and off inside a Sans title |
-/// | \\alpha, \\in, \\le, ... | Greek letters and common math symbols |
-/// | \\vec{s}, \\bar{x}, \\hat{n}, \\tilde{x}, \\dot{x} | accents |
-/// | \\mathrm{..}, \\mathbf{..}, \\text{..} | upright, bold, plain text |
+/// | V_P, s_{12}, 10^4 | subscript, superscript (one character or a braced group) |
+/// | \$...\$ | switches math style on and off inside a Sans label |
+/// | \\alpha, \\le, \\in, ... | Greek letters and common math symbols |
 /// | \\, and \\; and \\quad | thin, medium and wide spaces |
 /// | a backslash before _ ^ { } $ or a backslash | that character literally |
 ///
@@ -32,7 +29,6 @@ enum class Font {
   Math,      ///< Math labels such as V_P or s_1: italic serif letters, upright digits.
   Sans,      ///< Panel titles and plain annotations.
   SansBold,  ///< Emphasised titles.
-  Serif,     ///< Upright serif text.
 };
 
 /// How a label or title of a figure is set and painted.
@@ -44,15 +40,12 @@ struct TextStyle {
   Color haloColor = palette::background;  ///< Colour of the halo, normally the figure background.
 };
 
-/// Math labels of the figures (V_P, s_1, ...): italic serif, ink.
-inline constexpr TextStyle mathLabel = TextStyle{Font::Math, style::labelSize, palette::ink, 0.0, palette::background};
-/// Panel titles of the figures: sans serif, ink.
-inline constexpr TextStyle titleText = TextStyle{Font::Sans, style::titleSize, palette::ink, 0.0, palette::background};
-/// Small plain annotations (tick labels, notes): sans serif.
-inline constexpr TextStyle smallText = TextStyle{Font::Sans, style::smallSize, palette::ink, 0.0, palette::background};
+inline constexpr TextStyle mathLabel{Font::Math, style::labelSize, palette::ink, 0.0, palette::background};  ///< Math labels (V_P, s_1, ...).
+inline constexpr TextStyle titleText{Font::Sans, style::titleSize, palette::ink, 0.0, palette::background};  ///< Panel titles.
+inline constexpr TextStyle smallText{Font::Sans, style::smallSize, palette::ink, 0.0, palette::background};  ///< Small annotations.
 
-/// The ink box of a label relative to its pen origin on the baseline, in pixels (x to
-/// the right, ascent up, descent down); the Canvas places labels beside points with it.
+/// The ink box of a label relative to its pen origin on the baseline, in pixels (x to the
+/// right, ascent up, descent down); the Canvas places labels beside points by it.
 struct TextExtent {
   double left = 0.0;     ///< Leftmost ink relative to the pen origin (may be negative).
   double right = 0.0;    ///< Rightmost ink relative to the pen origin.
@@ -60,18 +53,16 @@ struct TextExtent {
   double descent = 0.0;  ///< Ink below the baseline (subscripts increase it).
   double advance = 0.0;  ///< Width of the label's line as Pango lays it out.
 
-  /// Width of the ink box.
-  double width() const { return right - left; }
-  /// Height of the ink box.
-  double height() const { return ascent + descent; }
+  double width() const { return right - left; }     ///< Width of the ink box.
+  double height() const { return ascent + descent; }  ///< Height of the ink box.
 };
 
 /// @p markup (the file comment's TeX-like markup) as Pango markup in @p font: the one
 /// place where the figures' notation becomes Pango's spans, sub and sup.
 std::string pangoMarkup(const std::string& markup, Font font);
 
-/// The ink box of @p markup set in @p font at @p sizePx pixels (> 0; else
-/// std::invalid_argument), as the Canvas will draw it.
+/// The ink box of @p markup set in @p font at @p sizePx pixels (> 0, else
+/// std::invalid_argument), as the Canvas draws it.
 TextExtent measureText(const std::string& markup, Font font, double sizePx);
 
 }  // namespace gjkx::render
