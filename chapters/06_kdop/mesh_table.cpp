@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
                "decomposed and as its hull, and writes the Markdown table of docs 06.",
                "gjkx_mesh_table"};
   std::string folder = "/usr/share/assimp/models", out;
-  double budget = 2, limit = 60;
+  double budget = 2, limit = 45;
   app.add_option("--models", folder, "the folder of models, searched with its subfolders")->capture_default_str();
   app.add_option("--out", out, "the Markdown file to write")->required();
   app.add_option("--budget", budget, "seconds each decomposition may take (gjkx_simulate's --decompose-budget)")
@@ -253,9 +253,11 @@ int main(int argc, char** argv) {
     hulls += r.hull.result == "hull";
   }
   std::ofstream table(out);
-  table << "Every model of Debian's `assimp-testmodels` (" << folder << ") that Assimp reads, " << rows.size()
-        << " files (" << unread << " other files there are images, materials or formats Assimp could not read), "
-        << "each made a moving body by gjkx_simulate's path (gjkx::buildBodies, no mesh cache) with a decomposition "
+  table << "Every model of Debian's `assimp-testmodels` (" << folder << "): the " << rows.size()
+        << " files that Assimp reads, or that gjkx refuses with a message of its own before or after Assimp (an empty "
+        << "file, a face index out of range, no triangles); the other " << unread
+        << " files there are images, materials, or files Assimp could not read. Each was "
+        << "made a moving body by gjkx_simulate's path (gjkx::buildBodies, no mesh cache) with a decomposition "
         << "budget of " << number(budget, "%g") << " s (the scene's default is 30 s): as `{\"mesh\": path}` "
         << "(decomposed: " << decomposed << "; its hull after the budget: " << fellBack << "; refused: " << refused
         << ") and as `{\"mesh\": path, \"collision\": \"hull\"}` (its hull: " << hulls << "). Pieces: the convex pieces "

@@ -67,7 +67,7 @@ TEST_CASE("gjkx_mesh_table: a row per model, decomposed, refused with the messag
   CHECK(rows[2][3].rfind("refused: sub/open_box.off: the mesh is not closed", 0) == 0);
   CHECK(rows[2][7] == "hull");
   CHECK(rows[2][8] == "8");
-  CHECK_THAT(text.str(), Catch::Contains("3 files (1 other files") && Catch::Contains("decomposed: 2;") &&
+  CHECK_THAT(text.str(), Catch::Contains("the 3 files") && Catch::Contains("the other 1 files") && Catch::Contains("decomposed: 2;") &&
                              Catch::Contains("refused: 1)") && Catch::Contains("(its hull: 3)"));
   fs::remove_all(dir);
 }
