@@ -71,6 +71,11 @@ void runFixedStep(StepContext& step, NarrowPhase<S>& narrow, double T0, double T
       const BodyState si = step.bodies[i].path.stateAt(tb), sj = step.bodies[j].path.stateAt(tb);
       Hit hit;
       if (!narrow.touchingAt(step, i, j, tb, si, sj, hit)) continue;
+      // A contact pair of the hybrid model is held by its contact solver: only one that came
+      // nearer than the contact check's band is the step's to resolve (contact_solver.hpp).
+      if (step.frame.isContactPair(i, j) &&
+          (hit.pointJ - hit.pointI).norm() > step.band(step.settings.tuning.contactCheckBand))
+        continue;
       std::optional<ContactPatch> deepest;
       if (hit.pointI == hit.pointJ) {
         // Overlapping: GJK stops at the overlap and gives no closest points, nor a patch

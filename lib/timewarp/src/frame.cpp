@@ -29,6 +29,11 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   spinRestarts += o.spinRestarts;
   eventCaps += o.eventCaps;
   projections += o.projections;
+  contactPoints += o.contactPoints;
+  contactGroups += o.contactGroups;
+  energyRises += o.energyRises;
+  contactSweeps += o.contactSweeps;
+  sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
   return *this;
@@ -41,6 +46,7 @@ PartTimes& PartTimes::operator+=(const PartTimes& o) {
   impulses += o.impulses;
   ordering += o.ordering;
   checks += o.checks;
+  contacts += o.contacts;
   return *this;
 }
 
@@ -74,6 +80,12 @@ const std::vector<FrameColumn>& frameColumns() {
       {"spin_restarts", [](const FrameReport& r) { return double(r.counters.spinRestarts); }, true},
       {"event_caps", [](const FrameReport& r) { return double(r.counters.eventCaps); }, true},
       {"projections", [](const FrameReport& r) { return double(r.counters.projections); }, true},
+      {"contact_points", [](const FrameReport& r) { return double(r.counters.contactPoints); }, true},
+      {"contact_groups", [](const FrameReport& r) { return double(r.counters.contactGroups); }, true},
+      {"contact_sweeps", [](const FrameReport& r) { return double(r.counters.contactSweeps); }, true},
+      {"energy_rises", [](const FrameReport& r) { return double(r.counters.energyRises); }, true},
+      {"sleeping", [](const FrameReport& r) { return double(r.counters.sleeping); }, true},
+      {"contacts_s", [](const FrameReport& r) { return r.parts.contacts; }, false},
   };
   return columns;
 }

@@ -65,11 +65,11 @@ const Motion<S>& NarrowPhase<S>::motionOf(const WorldBody& body, int b) {
 
 /// The time-of-impact query of piece pi of body i and piece pj of body j over [t0, t1].
 template <typename S>
-ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1) {
+ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1,
+                                        double tolerance) {
   const WorldBody& P = step.bodies[i];
   const WorldBody& Q = step.bodies[j];
   const StepTuning& tuning = step.settings.tuning;
-  const double tolerance = step.scene.collisionTolerance;
   const Moving<Shape<S>> movingP{piecesOf(step.bodies, i)[pi], motionOf(P, i)};
   const Moving<Shape<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
   // The paper's solver runs the paper's test with every refinement off; ours takes the
@@ -158,8 +158,10 @@ bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, doubl
   // The pair's collision is the earliest of its pieces'.
   bool found = false;
   Hit piece;
+  const double tolerance = step.frame.isContactPair(i, j) ? step.band(step.settings.tuning.contactCheckBand)
+                                                          : step.scene.collisionTolerance;
   for (const PiecePair& p : piecePairs(step, i, j, t0, t1)) {
-    if (!checkPieces(step, i, p.a, j, p.b, t0, t1, piece)) continue;
+    if (!checkPieces(step, i, p.a, j, p.b, t0, t1, tolerance, piece)) continue;
     if (!found || piece.time < hit.time) hit = piece;
     found = true;
   }
@@ -167,7 +169,8 @@ bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, doubl
 }
 
 template <typename S>
-bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, Hit& hit) {
+bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1,
+                                 double tolerance, Hit& hit) {
   FrameCounters& c = step.frame.report.counters;
   const StepTuning& tuning = step.settings.tuning;
   const double frameLength = step.frameLength();
@@ -179,7 +182,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     ToiResult<double> r;
     {
       PartTimer timer(step.frame.report.parts.collisionDetection);
-      r = query(step, i, pi, j, pj, t0, t1);
+      r = query(step, i, pi, j, pj, t0, t1, tolerance);
     }
     ++c.collisionChecks;
     c.brentIterations += r.brentIterations;
@@ -272,6 +275,18 @@ bool NarrowPhase<S>::touchingAt(StepContext& step, int i, int j, double t, const
     contactFromGjk(step, g, i, p.a, j, p.b, t, si, sj, hit);
   }
   return found;
+}
+
+template <typename S>
+void NarrowPhase<S>::piecesWithin(StepContext& step, int i, int j, double t, const BodyState& si,
+                                  const BodyState& sj, double distance,
+                                  std::vector<std::pair<PiecePair, GjkResult<double>>>& out) {
+  for (const PiecePair& p : piecePairs(step, i, j, t, t)) {
+    ++step.frame.report.counters.collisionChecks;
+    const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[p.a], si.worldFromBody},
+                                    Placed<Shape<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody});
+    if (g.status == GjkStatus::Overlapping || g.distance <= distance) out.emplace_back(p, g);
+  }
 }
 
 template class NarrowPhase<float>;

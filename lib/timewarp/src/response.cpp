@@ -2,6 +2,7 @@
 #include <gjkx/timewarp/response.hpp>
 
 #include <gjkx/timewarp/contact.hpp>
+#include <gjkx/timewarp/contact_solver.hpp>
 
 #include <algorithm>
 #include <deque>
@@ -52,7 +53,8 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
     struck.atLastTime = struck.lastTime == hit.time ? struck.atLastTime + 1 : 1;
     struck.lastTime = hit.time;
     bool wedged = false;
-    if (result.status == ImpulseStatus::Microcollision) {
+    // (The hybrid model holds resting bodies with its contact solver: no wedge to stop.)
+    if (result.status == ImpulseStatus::Microcollision && !step.hybrid()) {
       bool seen = false;
       for (const auto& side : struck.sides) {
         wedged = wedged || side.dot(outward) < 0;
@@ -71,9 +73,12 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
       // a few times per frame, each fall taking it deeper: a flat domino on the floor sank
       // half a millimetre per frame, 20 tolerances in 1.5 s. It sleeps instead: held where
       // it stands until a moving body strikes it (what engines call sleeping).
-      if (bodies[other].rigid.isStatic()) bodies[b].asleep = true;
+      // (The hybrid model's bodies sleep only as contact groups: contact_solver.hpp.)
+      if (bodies[other].rigid.isStatic() && !step.hybrid()) bodies[b].asleep = true;
     } else if (!bodies[other].resting()) {
-      bodies[b].asleep = false;  // struck by a moving body: awake
+      // Struck by a moving body: awake (in the hybrid, with the group it slept with).
+      if (step.hybrid()) wakeGroup(step, b);
+      else bodies[b].asleep = false;
     }
   }
 }
@@ -182,6 +187,8 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     // A path shorter than `minPath` is not worth keeping (and may not exist in float).
     const double t1 = end - tc > minPath ? end : tc + minPath;
     if (!flyFrom(step, b, s.state, tc, t1)) return {};
+    // Its path is no longer the contact solver's: its contacts go back to the pair checks.
+    if (step.hybrid()) releaseContacts(step, b);
   }
   return flown;
 }

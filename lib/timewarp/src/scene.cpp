@@ -22,6 +22,14 @@ const char* orderingName(Ordering ordering) {
   return "?";
 }
 
+const char* contactModelName(ContactModel model) {
+  switch (model) {
+    case ContactModel::Microcollisions: return "microcollisions";
+    case ContactModel::Hybrid: return "hybrid";
+  }
+  return "?";
+}
+
 namespace {
 
 using Json = nlohmann::json;
@@ -231,7 +239,7 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
   if (!root.is_object()) where.fail("", "(the whole file) must be a JSON object");
   rejectUnknownKeys(root,
                     {"gravity", "frame_rate", "duration", "collision_tolerance", "restitution", "friction", "scalar",
-                     "ordering", "fixed_substeps", "bodies"},
+                     "ordering", "fixed_substeps", "bodies", "contact"},
                     where, "");
   for (const char* required : {"duration", "bodies"})
     if (!root.contains(required)) where.fail(required, "is missing");
@@ -264,6 +272,12 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
     if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 100000)
       where.fail("fixed_substeps", "must be an integer from 1 to 100000, got " + n.dump());
     scene.run.fixedSubsteps = n.get<int>();
+  }
+  if (root.contains("contact")) {
+    const std::string s = text(root["contact"], where, "contact");
+    if (s == "microcollisions") scene.run.contact = ContactModel::Microcollisions;
+    else if (s == "hybrid") scene.run.contact = ContactModel::Hybrid;
+    else where.fail("contact", "must be \"microcollisions\" or \"hybrid\", got \"" + s + "\"");
   }
   const Json& bodies = root["bodies"];
   if (!bodies.is_array()) where.fail("bodies", "must be an array of bodies");

@@ -36,6 +36,15 @@ void StepTuning::validate(const std::string& field) const {
   atLeast(caughtAfter, 1, field + ".caughtAfter");
   atLeast(sameInstantAfter, 1, field + ".sameInstantAfter");
   atLeast(instantImpulses, 1, field + ".instantImpulses");
+  positive(contactBand, field + ".contactBand");
+  if (!(restSeparation >= 0 && restSeparation < contactBand))
+    failInput(field + ".restSeparation", "must lie in [0, contactBand)");
+  if (!(contactSpeed >= 0 && std::isfinite(contactSpeed))) failInput(field + ".contactSpeed", "must be finite and not negative");
+  atLeast(contactIterations, 1, field + ".contactIterations");
+  if (!(contactCheckBand > 0 && contactCheckBand <= restSeparation))
+    failInput(field + ".contactCheckBand", "must lie in (0, restSeparation]");
+  atLeast(positionIterations, 0, field + ".positionIterations");
+  positive(contactMatch, field + ".contactMatch");
   atLeast(eventCap, 1, field + ".eventCap");
   atLeast(eventCapPerBody, 0, field + ".eventCapPerBody");
   atLeast(maxIntervals, 1, field + ".maxIntervals");

@@ -50,7 +50,7 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
     for (int b : struck)
       for (int k = 0; k < int(bodies.size()); ++k)
         if (k != b && !(bodies[b].resting() && bodies[k].resting()) && boxes[b].overlaps(boxes[k]))
-          pairs.emplace_back(std::min(b, k), std::max(b, k));  // (two resting bodies: no collision, as in candidatePairs)
+          pairs.emplace_back(std::min(b, k), std::max(b, k));  // (as in candidatePairs)
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     return pairs;

@@ -2,6 +2,7 @@
 #include <gjkx/timewarp/world.hpp>
 
 #include <gjkx/timewarp/broad_phase.hpp>
+#include <gjkx/timewarp/contact_solver.hpp>
 #include <gjkx/timewarp/fixed_step.hpp>
 #include <gjkx/timewarp/sleep.hpp>
 #include <gjkx/timewarp/step.hpp>
@@ -105,25 +106,30 @@ FrameReport World::step() {
   std::vector<FreeFlight> paths;
   std::vector<int> versions;
   std::vector<char> asleep;
+  std::vector<int> groupsAsleep;
   for (const WorldBody& body : bodies_) {
     paths.push_back(body.path);
     versions.push_back(body.version);
     asleep.push_back(body.asleep);
+    groupsAsleep.push_back(body.sleepGroup);
   }
   const auto normals = pairNormals_;
+  const ContactCache cache = contactCache_;
   const std::size_t traced = trace_.size(), logged = collisionLog_.size();
   const auto restore = [&](int versionBump) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       bodies_[b].setPath(paths[b]);
       bodies_[b].version = versions[b] + versionBump;  // events computed on the abandoned run are stale
       bodies_[b].asleep = asleep[b];
+      bodies_[b].sleepGroup = groupsAsleep[b];
     }
     pairNormals_ = normals;
+    contactCache_ = cache;
     trace_.resize(traced);
     collisionLog_.resize(logged);
   };
   FrameState frame(bodies_.size());
-  StepContext step{scene_, settings_, impulse_, bodies_, trace_, collisionLog_, pairNormals_, frame, T1};
+  StepContext step{scene_, settings_, impulse_, bodies_, trace_, collisionLog_, pairNormals_, frame, contactCache_, T1};
   long spinRestarts = 0;
   try {
     for (;;) {
@@ -137,6 +143,9 @@ FrameReport World::step() {
               const double ta = k == 0 ? T0 : T0 + (T1 - T0) * k / intervals;
               const double tb = k + 1 == intervals ? T1 : T0 + (T1 - T0) * (k + 1) / intervals;
               step.intervalEnd = tb;
+              // The hybrid model: the resting contacts are solved first, their bodies' paths
+              // set over the interval; the ordering then finds the collisions.
+              if (step.hybrid() && !solveContacts(step, narrow, ta, tb)) break;
               switch (scene_.run.ordering) {
                 case Ordering::Timewarp: runTimewarp(step, narrow, ta, tb); break;
                 case Ordering::ToiHeap: runToiHeap(step, narrow, ta, tb); break;
@@ -164,7 +173,8 @@ FrameReport World::step() {
   }
   frame.report.counters.spinRestarts = spinRestarts;
   // The frame is final: the global virtual time has passed T1, its history is discarded.
-  settle(step, T1);
+  if (step.hybrid()) sleepGroups(step, T1);
+  else settle(step, T1);
   if (settings_.checks) {  // the independent checks, attached at the frame's end
     PartTimer timer(frame.report.parts.checks);
     std::vector<std::vector<PathPiece>> paths = std::move(frame.paths);
@@ -183,7 +193,7 @@ FrameReport World::step() {
   frame.report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   PartTimes& parts = frame.report.parts;
   parts.ordering = std::max(0.0, frame.report.wallSeconds - parts.integration - parts.bounds -
-                                     parts.collisionDetection - parts.impulses - parts.checks);
+                                     parts.collisionDetection - parts.impulses - parts.checks - parts.contacts);
   return frame.report;
 }
 

@@ -38,6 +38,11 @@ struct FrameCounters {
   long spinRestarts = 0;        ///< times the frame was run again in shorter intervals (a body spun past a half turn per interval)
   long eventCaps = 0;           ///< intervals whose events reached StepTuning's cap (FrameStatus::EventCap)
   long projections = 0;         ///< overlapping pairs moved apart at a fixed step's end (fixed_step.hpp)
+  long contactPoints = 0;       ///< manifold points solved by the hybrid's contact solver (summed over intervals)
+  long contactGroups = 0;       ///< contact groups solved (summed over intervals)
+  long contactSweeps = 0;       ///< sweeps of the contact solver over its groups' points
+  long energyRises = 0;         ///< group solves whose kinetic energy rose (must stay 0; contact_solver.hpp)
+  long sleeping = 0;            ///< bodies asleep at the frame's end
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 
@@ -52,6 +57,7 @@ struct PartTimes {
   double collisionDetection = 0;  ///< the time-of-impact solver (or the static tests)
   double impulses = 0;            ///< contact points and Mirtich's impulses
   double ordering = 0;            ///< the event queue, rollbacks, bookkeeping
+  double contacts = 0;            ///< the hybrid's contacts: manifolds, groups, the contact solver
   double checks = 0;              ///< the independent checks (not part of the method)
 
   /// Adds another frame's times.

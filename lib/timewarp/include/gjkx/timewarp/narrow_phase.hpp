@@ -41,6 +41,9 @@ class NarrowPhase {
   /// at again once it can have left the band (StepTuning::minLookAhead, maxLookAhead).
   /// Throws std::runtime_error naming the pair and the time when the solver meets a
   /// non-finite support point.
+  /// A contact pair of the hybrid model (FrameState::contactPairs), held apart by the contact
+  /// solver, is checked with a band of StepTuning::contactCheckBand tolerances instead: it is
+  /// a collision only where the solver's path fails to hold it (nothing passes through).
   bool checkPair(StepContext& step, int i, int j, double t0, double t1, Hit& hit);
 
   /// The static test of fixed steps (discrete collision detection): bodies i and j at the
@@ -48,10 +51,16 @@ class NarrowPhase {
   /// the tolerance in `hit`, if any is.
   bool touchingAt(StepContext& step, int i, int j, double t, const BodyState& si, const BodyState& sj, Hit& hit);
 
+  /// The piece pairs of bodies i and j at the states si and sj (time t) that lie within
+  /// `distance` of each other or overlap, each with its GJK in double, appended to `out`
+  /// (the hybrid's contacts, contact_solver.hpp).
+  void piecesWithin(StepContext& step, int i, int j, double t, const BodyState& si, const BodyState& sj,
+                    double distance, std::vector<std::pair<PiecePair, GjkResult<double>>>& out);
+
  private:
   std::vector<PiecePair> piecePairs(StepContext& step, int i, int j, double t0, double t1);
-  bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, Hit& hit);
-  ToiResult<double> query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1);
+  bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double tolerance, Hit& hit);
+  ToiResult<double> query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double tolerance);
   const std::vector<Shape<S>>& piecesOf(const std::vector<WorldBody>& bodies, int b) const;
   const Motion<S>& motionOf(const WorldBody& body, int b);
 

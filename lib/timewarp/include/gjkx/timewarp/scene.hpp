@@ -20,7 +20,8 @@
 /// Every key but `duration`, `bodies` and a body's `name`, `shape` and `position` has a
 /// default (those of the paper's experiment where it has one: e = 0.7, mu = 0.4, float,
 /// tolerance sqrt(eps) of float). The optional `fixed_substeps` sets the steps per frame of
-/// the `fixed_step` ordering. A shape is one of `{"box": [hx, hy, hz]}` (half extents),
+/// the `fixed_step` ordering, and `contact` the model of resting contact (`"hybrid"`, the
+/// default, or the paper's `"microcollisions"`). A shape is one of `{"box": [hx, hy, hz]}` (half extents),
 /// `{"sphere": r}`, `{"capsule": [r, half_length]}` (axis along the body's z),
 /// `{"cylinder": [r, half_length]}` (axis along the body's z, flat caps at ±half_length),
 /// `{"polytope": [[x, y, z], ...]}` (the convex hull of the points, in the body's frame),
@@ -55,6 +56,20 @@ enum class CollisionScalar {
 
 /// The name of an ordering as the scene file writes it.
 const char* orderingName(Ordering ordering);
+
+/// How bodies at rest against each other are modelled (the scene file's `contact`; §6's
+/// "future work", docs 07 *Resting contact*).
+enum class ContactModel {
+  /// The paper's model: every contact is a train of microcollisions, each an event of the
+  /// ordering resolved by Mirtich's impulse.
+  Microcollisions,
+  /// Collisions stay events, but pairs resting within the tolerance band are contacts: their
+  /// bodies form contact groups advanced by a velocity-level contact solver (contact_solver.hpp).
+  Hybrid,
+};
+
+/// The name of a contact model as the scene file writes it.
+const char* contactModelName(ContactModel model);
 
 /// A body's shape as the scene file gives it, in the body's frame.
 struct ShapeSpec {
@@ -124,7 +139,7 @@ struct BodySpec {
   bool isStatic = false;
 };
 
-/// How a scene asks to be run (the file's keys `scalar`, `ordering` and `fixed_substeps`),
+/// How a scene asks to be run (the file's keys `scalar`, `ordering`, `fixed_substeps` and `contact`),
 /// kept apart from what the scene is; gjkx_simulate's options override them, and the
 /// world's own settings (settings.hpp) say the rest.
 struct SceneRun {
@@ -134,6 +149,8 @@ struct SceneRun {
   Ordering ordering = Ordering::Timewarp;
   /// Steps per frame of the fixed-step ordering.
   int fixedSubsteps = 8;
+  /// How resting contact is modelled (the key `contact`; the hybrid when it is absent).
+  ContactModel contact = ContactModel::Hybrid;
 };
 
 /// A whole scene: what is simulated (its world's constants and its bodies), and how it asks to be run.

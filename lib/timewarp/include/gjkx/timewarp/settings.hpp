@@ -85,6 +85,36 @@ struct StepTuning {
   /// checks. 256: well above the torso's longest chain at its crash.
   int instantImpulses = 256;
 
+  // --- Resting contact in the hybrid model (contact_solver.hpp) ---
+
+  /// Pieces within this many `tol` at an interval's start, not closing faster than the
+  /// contact speed, are a contact. 2: the band of the patch (patchDepth), so a body the
+  /// solver holds at restSeparation stays a contact.
+  double contactBand = 2;
+  /// Where the solver brings a contact to rest: this many `tol` apart. 0.5: inside the band
+  /// (touching, §2.3), yet apart, so the independent checks see no overlap.
+  double restSeparation = 0.5;
+  /// The contact speed, in intervals of gravity: a pair closing faster than this × |g| Δt
+  /// is a collision (an event, with restitution). 2: gravity alone closes a resting pair by
+  /// |g| Δt over an interval; twice that is what only an impact gives.
+  double contactSpeed = 2;
+  /// Sweeps of sequential impulses in each of the three passes of a group's velocity solve,
+  /// at most (a pass stops once no impulse changes a velocity by a hundredth of
+  /// restSeparation per interval). 512: a stack of ten boxes placed touching, cold, needs
+  /// about 400 in its first pass, and a few once warm-started.
+  int contactIterations = 512;
+  /// A contact pair is still checked by the extrusion test, with this band (in `tol`): a
+  /// collision only where the solver's path brings it nearer than that. 0.25: half the rest
+  /// separation, which the solver's paths keep (a rotating body's corners follow arcs the
+  /// solver's velocities at t0 do not see; the check catches what they miss).
+  double contactCheckBand = 0.25;
+  /// Passes of the position projection, at most (it stops when a pass pushes nothing). 32:
+  /// a stack of ten boxes placed touching is lifted apart in a dozen.
+  int positionIterations = 32;
+  /// A manifold point takes the impulses of the last solve's point whose anchor in either
+  /// body is within this many `tol` (warm start). 10.
+  double contactMatch = 10;
+
   // --- Caps ---
 
   /// A frame's events are capped at eventCap + eventCapPerBody × bodies; past it the frame

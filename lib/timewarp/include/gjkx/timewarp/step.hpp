@@ -16,10 +16,12 @@
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/dynamics/swept_bounds.hpp>
 #include <gjkx/timewarp/body.hpp>
+#include <gjkx/timewarp/contact_manifold.hpp>
 #include <gjkx/timewarp/frame.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/settings.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -81,6 +83,15 @@ struct FrameState {
     double angularSpeed = 0;  ///< its angular speed (rad/s)
     std::string what;       ///< which body, how far it turned
   } spinOverflow;           ///< (see the struct)
+  /// The hybrid model's contact pairs (i < j, sorted): kept out of the ordering's pair
+  /// checks while both bodies keep the solver's paths (contact_solver.hpp).
+  std::vector<std::pair<int, int>> contactPairs;
+  /// The hybrid model's contact groups of the last interval (contact_solver.hpp).
+  std::vector<std::vector<int>> groups;
+  /// True if bodies i and j (any order) are a contact pair of the hybrid model.
+  bool isContactPair(int i, int j) const {
+    return std::binary_search(contactPairs.begin(), contactPairs.end(), std::make_pair(std::min(i, j), std::max(i, j)));
+  }
 
   /// A fresh frame for `bodies` bodies.
   explicit FrameState(std::size_t bodies = 0);
@@ -97,6 +108,8 @@ struct StepContext {
   /// Per piece pair (i, pi, j, pj), the last reliable contact normal (contact.hpp), zero until one is seen.
   std::map<std::array<int, 4>, Eigen::Vector3d>& pairNormals;
   FrameState& frame;                          ///< the frame being run
+  /// The hybrid's manifolds of the last solve, with their impulses (warm start).
+  ContactCache& contactCache;
   double intervalEnd = 0;  ///< the end of the interval an ordering runs (a collision flies its bodies on to it)
 
   /// The scene's collision tolerance times `multiple` (StepTuning's multiples).
@@ -112,6 +125,8 @@ struct StepContext {
     const std::uint64_t slot = std::uint64_t(i) * std::uint64_t(bodies.size()) + std::uint64_t(j);
     return (slot << 32) | std::uint64_t(std::uint32_t(pi) * std::uint32_t(bodies[j].pieces.size()) + std::uint32_t(pj));
   }
+  /// True when the scene's resting contact is the hybrid model (contact_solver.hpp).
+  bool hybrid() const { return scene.run.contact == ContactModel::Hybrid; }
   /// Records a trace event when tracing.
   void record(TraceEvent::Kind kind, int body, int other, double from, double to) {
     if (settings.trace) trace.push_back({kind, body, other, from, to});

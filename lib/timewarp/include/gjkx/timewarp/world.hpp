@@ -8,12 +8,13 @@
 /// ```
 /// scene ──> buildBodies (body.hpp)                 narrow phase in the scene's scalar (narrow_phase.hpp)
 /// frame [T0, T1], in intervals of at most a quarter turn of the fastest body:
+///   hybrid contact model only: contacts, groups, the contact solver (contact_solver.hpp)
 ///   ordering: timewarp.hpp | toi_heap.hpp | fixed_step.hpp
 ///     ├─ free flight of the moving bodies (step.hpp)
 ///     ├─ broad phase: swept bounds (broad_phase.hpp)
 ///     ├─ narrow phase: extrusion + Brent on the piece pairs (narrow_phase.hpp), contact data (contact.hpp)
 ///     └─ response: Mirtich's impulse, the instant pass, Zeno's wedge (response.hpp)
-///   settling of slow bodies at rest (sleep.hpp)
+///   settling of slow bodies at rest (sleep.hpp), or, hybrid, sleeping groups (contact_solver.hpp)
 ///   the independent checks (gjkx/verify/frame_verifier.hpp), when on
 ///   ──> FrameReport (frame.hpp): counters, status, wall time by part
 /// ```
@@ -28,6 +29,7 @@
 #pragma once
 
 #include <gjkx/timewarp/body.hpp>
+#include <gjkx/timewarp/contact_manifold.hpp>
 #include <gjkx/timewarp/frame.hpp>
 #include <gjkx/timewarp/narrow_phase.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -89,6 +91,8 @@ class World {
   std::vector<TraceEvent> trace_;
   std::vector<CollisionRecord> collisionLog_;
   std::map<std::array<int, 4>, Eigen::Vector3d> pairNormals_;
+  /// The hybrid's manifolds of the last solve, with their impulses (contact_solver.hpp).
+  ContactCache contactCache_;
 };
 
 }  // namespace gjkx

@@ -1,0 +1,497 @@
+// Resting contact in the hybrid model (contact_solver.hpp).
+#include <gjkx/timewarp/contact_solver.hpp>
+
+#include <gjkx/timewarp/contact.hpp>
+#include <gjkx/timewarp/narrow_phase.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace gjkx {
+
+namespace {
+
+/// A body as the solver sees it: its velocities, and its inverse mass and inertia (zero
+/// for a body outside the group: static or asleep, it does not move).
+struct SolverBody {
+  double inverseMass = 0;
+  Eigen::Matrix3d inverseInertia = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+};
+
+/// One manifold point as a constraint row: its lever arms, its effective mass along the
+/// normal, and the normal velocity it may close at.
+struct Row {
+  Manifold* manifold;
+  ManifoldPoint* point;
+  Eigen::Vector3d rI, rJ;
+  double normalMass;
+  Eigen::Vector3d t1, t2;        // a basis of the tangent plane
+  Eigen::Matrix2d tangentMass;   // the inverse of the tangent plane's 2x2 block
+  double tangentScale;           // the block's size: an impulse times it is a velocity
+  double target;  // the least normal velocity allowed (never positive: speculative contact)
+};
+
+/// How the relative velocity at lever arms rI, rJ along unit e answers an impulse along unit d:
+/// d.e (1/m_i + 1/m_j) + (r_i x d) . I_i^-1 (r_i x e) + (r_j x d) . I_j^-1 (r_j x e); for e = d,
+/// the inverse of the effective mass along d.
+double response(const SolverBody& I, const SolverBody& J, const Eigen::Vector3d& rI, const Eigen::Vector3d& rJ,
+                const Eigen::Vector3d& d, const Eigen::Vector3d& e) {
+  return d.dot(e) * (I.inverseMass + J.inverseMass) + rI.cross(d).dot(I.inverseInertia * rI.cross(e)) +
+         rJ.cross(d).dot(J.inverseInertia * rJ.cross(e));
+}
+
+double kineticEnergy(const StepContext& step, const std::vector<int>& group, const std::vector<BodyState>& states) {
+  double e = 0;
+  for (int b : group) e += step.bodies[b].rigid.kineticEnergy(states[b]);
+  return e;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// The velocity solve of a group: sequential impulses (Catto 2005). Each row's impulse is
+// accumulated and clamped (normal impulse >= 0, friction within Coulomb's disc |f| <= mu
+// lambda_n), and each iteration applies only the change, so the result is the projected
+// Gauss-Seidel solution of the contact LCP. Warm-started: each point starts from the
+// impulses it took in the last solve, so a resting stack starts where it ended and the
+// iterations only follow what changed.
+GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
+                      std::vector<BodyState>& states, double dt, bool gravity) {
+  const StepTuning& tuning = step.settings.tuning;
+  const double tolerance = step.scene.collisionTolerance;
+  std::vector<SolverBody> solverBodies(step.bodies.size());
+  for (int b : group) {
+    const WorldBody& body = step.bodies[b];
+    SolverBody& s = solverBodies[b];
+    s.inverseMass = body.rigid.inverseMass();
+    s.inverseInertia = body.rigid.inverseInertiaWorld(states[b].worldFromBody.rotation);
+    if (gravity) states[b].velocity += step.scene.gravity * dt;
+  }
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) solverBodies[b].centre = states[b].worldFromBody.translation;
+  GroupSolve out;
+  out.kineticBefore = kineticEnergy(step, group, states);
+  const auto apply = [&](const Row& row, const Eigen::Vector3d& impulse) {
+    const int i = row.manifold->i, j = row.manifold->j;
+    const SolverBody &I = solverBodies[i], &J = solverBodies[j];
+    states[i].velocity -= I.inverseMass * impulse;
+    states[i].angularVelocity -= I.inverseInertia * row.rI.cross(impulse);
+    states[j].velocity += J.inverseMass * impulse;
+    states[j].angularVelocity += J.inverseInertia * row.rJ.cross(impulse);
+  };
+  const auto relativeVelocity = [&](const Row& row) -> Eigen::Vector3d {
+    const BodyState &si = states[row.manifold->i], &sj = states[row.manifold->j];
+    return sj.velocity + sj.angularVelocity.cross(row.rJ) - si.velocity - si.angularVelocity.cross(row.rI);
+  };
+  const double rest = tuning.restSeparation * tolerance;
+  std::vector<Row> rows;
+  for (Manifold* m : manifolds) {
+    const SolverBody &I = solverBodies[m->i], &J = solverBodies[m->j];
+    const Eigen::Vector3d& n = m->normal;
+    for (ManifoldPoint& p : m->points) {
+      Row row{m, &p, p.point - I.centre, p.point - J.centre, 0, n.unitOrthogonal(), Eigen::Vector3d::Zero(),
+              Eigen::Matrix2d::Zero(), 0, 0};
+      row.t2 = n.cross(row.t1);
+      const double k = response(I, J, row.rI, row.rJ, n, n);
+      row.normalMass = k > 0 ? 1.0 / k : 0.0;
+      Eigen::Matrix2d K;
+      K << response(I, J, row.rI, row.rJ, row.t1, row.t1), response(I, J, row.rI, row.rJ, row.t1, row.t2),
+          response(I, J, row.rI, row.rJ, row.t2, row.t1), response(I, J, row.rI, row.rJ, row.t2, row.t2);
+      if (K.determinant() > 1e-300) row.tangentMass = K.inverse();
+      row.tangentScale = K.norm();
+      // Speculative contact: the point may close by what separates it from rest, no more.
+      row.target = -std::max(0.0, p.separation - rest) / dt;
+      rows.push_back(row);
+      // Warm start: last solve's impulses (the friction kept in the contact plane).
+      p.frictionImpulse -= n * n.dot(p.frictionImpulse);
+      apply(row, p.normalImpulse * n + p.frictionImpulse);
+    }
+  }
+  // Sweeps until no impulse changes the velocity at its point by more than a hundredth of
+  // the speed that closes the rest separation in the interval (StepTuning::contactIterations
+  // at most). The rows go from the bottom up (against gravity): the weight of a stack
+  // reaches the floor in one sweep, as Guendelman et al. order their contact graph.
+  if (step.scene.gravity.squaredNorm() > 0) {
+    const Eigen::Vector3d up = -step.scene.gravity.normalized();
+    std::stable_sort(rows.begin(), rows.end(),
+                     [&](const Row& a, const Row& b) { return up.dot(a.point->point) < up.dot(b.point->point); });
+  }
+  const double settled = 1e-2 * rest / dt;
+  // One sweep over the rows: with friction, the tangent impulse within Coulomb's disc of
+  // radius limit, then the normal. Returns the largest velocity change it made.
+  std::vector<double> limits(rows.size(), 0.0);
+  const auto sweep = [&](bool friction) {
+    double largest = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      Row& row = rows[r];
+      ManifoldPoint& p = *row.point;
+      const Eigen::Vector3d& n = row.manifold->normal;
+      if (friction) {
+        // The impulse that stops the point's slip: the tangent plane's 2x2 block solved
+        // exactly (its two directions are coupled through the rotation); if that lies within
+        // Coulomb's disc the point sticks. Else it slides, and feels mu lambda_n against its
+        // slip: the impulse that would stop the slip along it, cut to the disc.
+        const Eigen::Vector3d v = relativeVelocity(row);
+        const Eigen::Vector3d slip = v - n * n.dot(v);
+        const double speed = slip.norm();
+        if (speed > 0) {
+          const Eigen::Vector3d old = p.frictionImpulse;
+          const Eigen::Vector2d stop = -row.tangentMass * Eigen::Vector2d(row.t1.dot(slip), row.t2.dot(slip));
+          Eigen::Vector3d next = old + stop.x() * row.t1 + stop.y() * row.t2;
+          if (next.norm() > limits[r]) {
+            const Eigen::Vector3d t = slip / speed;
+            const double k = response(solverBodies[row.manifold->i], solverBodies[row.manifold->j], row.rI, row.rJ, t, t);
+            next = old - (k > 0 ? speed / k : 0.0) * t;
+            if (next.norm() > limits[r]) next *= limits[r] / next.norm();
+          }
+          p.frictionImpulse = next;
+          apply(row, next - old);
+          largest = std::max(largest, std::min(speed, (next - old).norm() * row.tangentScale));
+        }
+      }
+      const double vn = n.dot(relativeVelocity(row));
+      const double old = p.normalImpulse;
+      p.normalImpulse = std::max(0.0, old - row.normalMass * (vn - row.target));
+      apply(row, (p.normalImpulse - old) * n);
+      largest = std::max(largest, std::abs(p.normalImpulse - old) / std::max(row.normalMass, 1e-300));
+    }
+    ++out.sweeps;
+    return largest;
+  };
+  // Friction bounded by the normal impulse it is solved with is no longer a minimum of
+  // anything, and Gauss-Seidel on it can wander (a stack of ten boxes never settled). So the
+  // bounds are frozen: the normals are solved first, then friction and normals together
+  // with the bounds mu lambda_n of the last pass, twice. With its bounds fixed each pass is
+  // projected Gauss-Seidel on a convex quadratic program, and each of its steps can only
+  // lower the kinetic energy.
+  const int budget = tuning.contactIterations;  // per pass
+  for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      ManifoldPoint& p = *rows[r].point;
+      limits[r] = rows[r].manifold->friction * p.normalImpulse;
+      if (p.frictionImpulse.norm() > limits[r]) {  // a warm start above the new bound is cut to it
+        const Eigen::Vector3d next = p.frictionImpulse * (limits[r] / p.frictionImpulse.norm());
+        apply(rows[r], next - p.frictionImpulse);
+        p.frictionImpulse = next;
+      }
+    }
+    for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
+  }
+  out.kineticAfter = kineticEnergy(step, group, states);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// The contact part of a step.
+
+namespace {
+
+/// The body pairs of the hybrid's contacts, found at t0 by the pieces' static tests.
+template <typename S>
+std::vector<Manifold> findContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double dt,
+                                   std::vector<BodyState>& states) {
+  std::vector<WorldBody>& bodies = step.bodies;
+  const StepTuning& tuning = step.settings.tuning;
+  const double tolerance = step.scene.collisionTolerance;
+  const double band = step.band(tuning.contactBand);
+  const double contactSpeed = tuning.contactSpeed * step.scene.gravity.norm() * dt;
+  std::vector<Bounds> boxes(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    boxes[b].add(states[b].worldFromBody.translation);
+    boxes[b].inflate(bodies[b].radius + band);
+  }
+  // A moving body that comes within the band of a sleeping one wakes its group (Box2D's
+  // islands wake as a contact begins): to the solver a sleeping body is immovable, and a
+  // domino leaning on one that sleeps would be held by a wall. Woken bodies touch others
+  // that sleep, so this is repeated until nothing more wakes.
+  for (bool woke = true; woke;) {
+    woke = false;
+    const auto near = overlappingPairs(boxes, [&](int i, int j) { return bodies[i].asleep == bodies[j].asleep; });
+    for (const auto& [i, j] : near) {
+      const int sleeper = bodies[i].asleep ? i : j, mover = sleeper == i ? j : i;
+      if (bodies[mover].rigid.isStatic() || !bodies[sleeper].asleep) continue;
+      std::vector<std::pair<PiecePair, GjkResult<double>>> touching;
+      narrow.piecesWithin(step, i, j, t0, states[i], states[j], band, touching);
+      if (touching.empty()) continue;
+      wakeGroup(step, sleeper);
+      woke = true;
+    }
+  }
+  const auto pairs = overlappingPairs(boxes, [&](int i, int j) { return bodies[i].resting() && bodies[j].resting(); });
+  std::vector<Manifold> manifolds;
+  std::vector<std::pair<PiecePair, GjkResult<double>>> close;
+  const auto speedOf = [&](int b) {
+    const BodyState& s = states[b];
+    return bodies[b].resting() ? 0.0 : s.velocity.norm() + s.angularVelocity.norm() * bodies[b].radius;
+  };
+  for (const auto& [i, j] : pairs) {
+    close.clear();
+    narrow.piecesWithin(step, i, j, t0, states[i], states[j], band, close);
+    if (close.empty()) continue;
+    const std::size_t first = manifolds.size();
+    bool collides = false;
+    // The features reach as deep as the pair can close over the interval, so that every
+    // point that may touch before t1 is in the manifold (a tilted box's far edge).
+    const double smaller = std::min(bodies[i].rigid.isStatic() ? 1e300 : bodies[i].radius,
+                                    bodies[j].rigid.isStatic() ? 1e300 : bodies[j].radius);
+    const double depth = std::min(band + (speedOf(i) + speedOf(j) + step.scene.gravity.norm() * dt) * dt, smaller);
+    const auto [restitution, friction] =
+        materialOf(step.scene, step.scene.bodies[std::size_t(i)], step.scene.bodies[std::size_t(j)]);
+    (void)restitution;  // contacts have none
+    for (const auto& [pieces, g] : close) {
+      Hit hit;
+      contactFromGjk(step, g, i, pieces.a, j, pieces.b, t0, states[i], states[j], hit);
+      const double distance = g.status == GjkStatus::Overlapping ? 0.0 : g.distance;
+      const Shape<double>& pieceI = bodies[i].pieces[pieces.a];
+      const Shape<double>& pieceJ = bodies[j].pieces[pieces.b];
+      const Pose<double>& poseI = states[i].worldFromBody;
+      const Pose<double>& poseJ = states[j].worldFromBody;
+      // Overlapping, or too near for the closest points to give a direction: the axis of
+      // least overlap (contactNormal's fallback, the line of the centres, can be far off).
+      if (!(distance > step.band(tuning.reliableNormal)))
+        hit.normal = leastOverlapAxis(pieceI, poseI, pieceJ, poseJ, {hit.normal});
+      // Faces give their normal exactly (GJK's is off by its tolerance over the distance).
+      hit.normal = faceNormal(pieceI, poseI, pieceJ, poseJ, hit.normal, band + 0.01 * smaller);
+      Manifold m;
+      m.i = i;
+      m.pi = pieces.a;
+      m.j = j;
+      m.pj = pieces.b;
+      m.normal = hit.normal;
+      m.friction = friction;
+      m.points = contactManifold(bodies[i].pieces[pieces.a], states[i].worldFromBody, bodies[j].pieces[pieces.b],
+                                 states[j].worldFromBody, hit.normal, depth, 0.5 * (hit.pointI + hit.pointJ),
+                                 distance, tolerance);
+      // Closing faster than the contact speed at any point: a collision, left to the ordering.
+      for (const ManifoldPoint& p : m.points)
+        if (hit.normal.dot(bodies[j].rigid.velocityAt(states[j], p.point) -
+                           bodies[i].rigid.velocityAt(states[i], p.point)) < -contactSpeed)
+          collides = true;
+      if (collides) break;
+      manifolds.push_back(std::move(m));
+    }
+    if (collides) manifolds.resize(first);
+  }
+  return manifolds;
+}
+
+/// Each point's anchors in its two bodies, and the impulses of the last solve's point at the
+/// same place (warm start).
+void warmStart(StepContext& step, std::vector<Manifold>& manifolds, const std::vector<BodyState>& states) {
+  const double match = step.band(step.settings.tuning.contactMatch);
+  for (Manifold& m : manifolds) {
+    const Pose<double>& poseI = states[m.i].worldFromBody;
+    const Pose<double>& poseJ = states[m.j].worldFromBody;
+    const auto cached = step.contactCache.find(step.piecePairKey(m.i, m.pi, m.j, m.pj));
+    for (ManifoldPoint& p : m.points) {
+      p.anchorI = poseI.rotation.transpose() * (p.point - poseI.translation);
+      p.anchorJ = poseJ.rotation.transpose() * (p.point - poseJ.translation);
+      if (cached == step.contactCache.end() || cached->second.normal.dot(m.normal) < 0.9) continue;
+      for (const ManifoldPoint& old : cached->second.points)
+        if ((old.anchorI - p.anchorI).norm() <= match || (old.anchorJ - p.anchorJ).norm() <= match) {
+          p.normalImpulse = old.normalImpulse;
+          p.frictionImpulse = old.frictionImpulse;
+          break;
+        }
+    }
+  }
+}
+
+/// The groups: the moving bodies joined by contacts (union-find; resting bodies join none).
+std::vector<std::vector<int>> groupsOf(const StepContext& step, const std::vector<Manifold>& manifolds) {
+  const std::size_t n = step.bodies.size();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int b) {
+    while (parent[b] != b) b = parent[b] = parent[parent[b]];
+    return b;
+  };
+  std::vector<char> member(n, 0);
+  for (const Manifold& m : manifolds) {
+    const bool movesI = !step.bodies[m.i].resting(), movesJ = !step.bodies[m.j].resting();
+    if (movesI) member[m.i] = 1;
+    if (movesJ) member[m.j] = 1;
+    if (movesI && movesJ) parent[root(m.i)] = root(m.j);
+  }
+  std::vector<std::vector<int>> groups;
+  std::vector<int> groupOf(n, -1);
+  for (std::size_t b = 0; b < n; ++b) {
+    if (!member[b]) continue;
+    const int r = root(int(b));
+    if (groupOf[r] < 0) {
+      groupOf[r] = int(groups.size());
+      groups.emplace_back();
+    }
+    groups[groupOf[r]].push_back(int(b));
+  }
+  return groups;
+}
+
+/// Position projection (non-linear Gauss-Seidel on positions): each manifold's deepest
+/// point nearer than rest moves its bodies apart along the normal, in proportion to their
+/// inverse masses. Positions only: no velocity, so no energy, is added.
+void project(StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
+             std::vector<BodyState>& states) {
+  const double rest = step.band(step.settings.tuning.restSeparation);
+  std::vector<Eigen::Vector3d> moved(step.bodies.size(), Eigen::Vector3d::Zero());
+  std::vector<char> inGroup(step.bodies.size(), 0);
+  for (int b : group) inGroup[b] = 1;
+  const auto weight = [&](int b) { return inGroup[b] ? step.bodies[b].rigid.inverseMass() : 0.0; };
+  // From the bottom up, as the velocities (a stack is lifted off the floor in one pass), until
+  // nothing is pushed or StepTuning::positionIterations passes.
+  std::vector<Manifold*> order = manifolds;
+  if (step.scene.gravity.squaredNorm() > 0) {
+    const Eigen::Vector3d up = -step.scene.gravity.normalized();
+    const auto height = [&](const Manifold* m) { return up.dot(m->points.front().point); };
+    std::stable_sort(order.begin(), order.end(), [&](const Manifold* a, const Manifold* b) { return height(a) < height(b); });
+  }
+  bool any = false;
+  for (int iteration = 0; iteration < step.settings.tuning.positionIterations; ++iteration) {
+    bool pushed = false;
+    for (Manifold* m : order) {
+      double deepest = 1e300;
+      for (const ManifoldPoint& p : m->points)
+        deepest = std::min(deepest, p.separation + m->normal.dot(moved[m->j] - moved[m->i]));
+      const double wi = weight(m->i), wj = weight(m->j);
+      if (deepest >= rest || wi + wj <= 0) continue;
+      const Eigen::Vector3d push = (rest - deepest) / (wi + wj) * m->normal;
+      moved[m->i] -= wi * push;
+      moved[m->j] += wj * push;
+      any = pushed = true;
+    }
+    if (!pushed) break;
+  }
+  if (!any) return;
+  ++step.frame.report.counters.projections;
+  for (int b : group) states[b].worldFromBody.translation += moved[b];
+  for (Manifold* m : manifolds)
+    for (ManifoldPoint& p : m->points) {
+      p.separation += m->normal.dot(moved[m->j] - moved[m->i]);
+      p.point += 0.5 * (moved[m->i] + moved[m->j]);
+    }
+}
+
+}  // namespace
+
+template <typename S>
+bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double t1) {
+  std::vector<WorldBody>& bodies = step.bodies;
+  FrameState& frame = step.frame;
+  const double dt = t1 - t0;
+  std::vector<BodyState> states(bodies.size());
+  std::vector<std::vector<int>> groups;
+  std::vector<Manifold> manifolds;
+  {
+    PartTimer timer(frame.report.parts.contacts);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      bodies[b].contactFlight = false;
+      states[b] = bodies[b].rigid.isStatic() ? bodies[b].path.start : renormalized(bodies[b].path.stateAt(t0));
+      if (bodies[b].asleep) {
+        states[b].velocity.setZero();
+        states[b].angularVelocity.setZero();
+      }
+    }
+    frame.contactPairs.clear();
+    manifolds = findContacts(step, narrow, t0, dt, states);
+    warmStart(step, manifolds, states);
+    groups = groupsOf(step, manifolds);
+    // Each group's manifolds (a manifold with a resting body belongs to its moving one's group).
+    std::vector<int> groupOf(bodies.size(), -1);
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      for (int b : groups[g]) groupOf[b] = int(g);
+    std::vector<std::vector<Manifold*>> ofGroup(groups.size());
+    for (Manifold& m : manifolds) ofGroup[std::max(groupOf[m.i], groupOf[m.j])].push_back(&m);
+    FrameCounters& c = frame.report.counters;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      project(step, groups[g], ofGroup[g], states);
+      const GroupSolve solve = solveGroup(step, groups[g], ofGroup[g], states, dt, true);
+      ++c.contactGroups;
+      c.contactSweeps += solve.sweeps;
+      if (solve.kineticAfter > solve.kineticBefore * (1 + 1e-9) + 1e-12) ++c.energyRises;
+    }
+    step.contactCache.clear();
+    for (const Manifold& m : manifolds) {
+      c.contactPoints += long(m.points.size());
+      frame.contactPairs.emplace_back(m.i, m.j);
+      touched(step, m.i, m.pi, m.j, m.pj);  // the instant pass carries a collision through contacts
+      step.contactCache.emplace(step.piecePairKey(m.i, m.pi, m.j, m.pj), m);
+    }
+    std::sort(frame.contactPairs.begin(), frame.contactPairs.end());
+    frame.contactPairs.erase(std::unique(frame.contactPairs.begin(), frame.contactPairs.end()), frame.contactPairs.end());
+  }
+  // Each group's bodies fly over the interval on the solved velocities, gravity off.
+  for (const std::vector<int>& group : groups)
+    for (int b : group) {
+      bodies[b].contactFlight = true;
+      if (!flyFrom(step, b, states[b], t0, t1)) return false;
+    }
+  frame.groups = std::move(groups);
+  return true;
+}
+
+template bool solveContacts<float>(StepContext&, NarrowPhase<float>&, double, double);
+template bool solveContacts<double>(StepContext&, NarrowPhase<double>&, double, double);
+
+void releaseContacts(StepContext& step, int b) {
+  auto& pairs = step.frame.contactPairs;
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == b || p.second == b; }),
+              pairs.end());
+}
+
+void wakeGroup(StepContext& step, int b) {
+  WorldBody& body = step.bodies[b];
+  const int group = body.sleepGroup;
+  body.asleep = false;
+  body.sleepGroup = -1;
+  if (group < 0) return;
+  for (WorldBody& other : step.bodies)
+    if (other.sleepGroup == group) {
+      other.asleep = false;
+      other.sleepGroup = -1;
+    }
+}
+
+void sleepGroups(StepContext& step, double T1) {
+  std::vector<WorldBody>& bodies = step.bodies;
+  const double g = step.scene.gravity.norm();
+  const double frameLength = step.frameLength();
+  std::vector<char> grouped(bodies.size(), 0);
+  for (const std::vector<int>& group : step.frame.groups) {
+    bool sleeps = g > 0;  // without weight nothing holds a body still: rest is not defined
+    for (int b : group) {
+      grouped[b] = 1;
+      WorldBody& body = bodies[b];
+      // Slow: too little kinetic energy to lift it out of the band (sleep.hpp's test).
+      const BodyState end = body.path.stateAt(T1);
+      const bool slow = g > 0 && body.rigid.kineticEnergy(end) * body.rigid.inverseMass() / g <
+                                     step.band(step.settings.tuning.settleEnergy);
+      body.slowFor = slow ? body.slowFor + frameLength : 0.0;
+      sleeps = sleeps && body.slowFor >= step.settings.tuning.settleSeconds;
+    }
+    if (!sleeps) continue;
+    for (int b : group) {
+      WorldBody& body = bodies[b];
+      BodyState state = body.path.stateAt(T1);
+      state.velocity.setZero();
+      state.angularVelocity.setZero();
+      body.asleep = true;
+      body.contactFlight = false;
+      body.sleepGroup = group.front();
+      body.slowFor = 0;
+      body.setPath(freeFlight(body.rigid, state, T1, T1, Eigen::Vector3d::Zero()));
+      ++body.version;
+      ++step.frame.report.counters.settled;
+    }
+  }
+  long sleeping = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!grouped[b] && !bodies[b].asleep) bodies[b].slowFor = 0;  // flying free: not at rest
+    sleeping += bodies[b].asleep;
+  }
+  step.frame.report.counters.sleeping = sleeping;
+}
+
+}  // namespace gjkx

@@ -1,0 +1,235 @@
+// Resting contact under the hybrid model (contact_solver.hpp), against physics nobody here
+// wrote: stacks and a pyramid that stand within one collision tolerance, a heavy box on a
+// light one, Coulomb friction that holds a box below its friction angle and lets it slide
+// at g (sin θ − μ cos θ) above it, a ball that rolls at (5/7) g sin θ, a pushed box that
+// stops after v² / (2 μ g), no energy from any contact solve, and the same run twice.
+//
+// The hybrid advances contact groups by semi-implicit Euler (the solved velocity over the
+// whole interval, as Box2D, Bullet and MuJoCo do), whose position under a constant
+// acceleration a after n intervals is ½ a t² (1 + 1/n): the tests that compare a distance
+// with ½ a t² within 2% run at 120 frames a second for 1 to 2 s (an error of 1/n, under 1%).
+#include <gjkx/timewarp/contact_manifold.hpp>
+#include <gjkx/timewarp/scene.hpp>
+#include <gjkx/timewarp/world.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace gjkx;
+
+namespace {
+
+const double tol = 3.4526698e-4;  // the scene's default collision tolerance
+const double g = 9.81;
+
+std::string box(const std::string& name, Eigen::Vector3d half, Eigen::Vector3d at, const std::string& extra = "") {
+  char text[512];
+  std::snprintf(text, sizeof text, R"({ "name": "%s", "shape": {"box": [%.9g, %.9g, %.9g]}, "position": [%.9g, %.9g, %.9g]%s })",
+                name.c_str(), half.x(), half.y(), half.z(), at.x(), at.y(), at.z(), extra.c_str());
+  return text;
+}
+
+const std::string floorBody = R"({ "name": "floor", "shape": {"box": [20, 20, 0.5]}, "position": [0, 0, -0.5], "static": true })";
+
+Scene sceneOf(const std::string& settings, const std::vector<std::string>& bodies) {
+  std::string list;
+  for (const auto& b : bodies) list += (list.empty() ? "" : ", ") + b;
+  return parseScene("{ " + settings + R"(, "bodies": [)" + list + "] }", "test");
+}
+
+/// What a run of a resting scene did: the deepest overlap of any two bodies at any frame's
+/// end (by the independent reference library), how far any body moved from its first frame's
+/// end, and the world's counters.
+struct Rest {
+  double deepest = 0;
+  double drift = 0;
+  long collisions = 0, energyRises = 0, contactPoints = 0;
+  bool asleep = false;
+};
+
+Rest rest(const Scene& scene) {
+  World world(scene, WorldSettings{});
+  const FrameVerifier verifier(verifiedBodies(world.bodies()), scene.collisionTolerance, scene.gravity);
+  std::vector<Eigen::Vector3d> first;
+  Rest out;
+  while (!world.done()) {
+    const FrameReport r = world.step();
+    out.collisions += r.counters.collisions;
+    out.energyRises += r.counters.energyRises;
+    out.contactPoints += r.counters.contactPoints;
+    const int n = int(world.bodies().size());
+    if (first.empty())
+      for (int b = 0; b < n; ++b) first.push_back(world.positionOf(b));
+    for (int b = 0; b < n; ++b) out.drift = std::max(out.drift, (world.positionOf(b) - first[b]).norm());
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        if ((world.positionOf(i) - world.positionOf(j)).norm() > world.bodies()[i].radius + world.bodies()[j].radius + 0.01)
+          continue;
+        const double d = verifier.signedDistance(i, world.stateOf(i).worldFromBody, j, world.stateOf(j).worldFromBody);
+        out.deepest = std::max(out.deepest, -d);
+      }
+  }
+  out.asleep = true;
+  for (const WorldBody& b : world.bodies()) out.asleep = out.asleep && (b.rigid.isStatic() || b.asleep);
+  return out;
+}
+
+/// A rotation about y by θ: the x axis goes down the slope, (cos θ, 0, −sin θ).
+std::string tilted(double theta) {
+  char text[128];
+  std::snprintf(text, sizeof text, R"(, "orientation": [%.12g, 0, %.12g, 0])", std::cos(theta / 2), std::sin(theta / 2));
+  return text;
+}
+
+/// How far body 1 has gone down a ramp tilted by θ (body 0), from where it started.
+struct Slide {
+  double distance = 0;
+  double end = 0;
+};
+
+Slide slide(const Scene& scene, double theta, double until) {
+  World world(scene, WorldSettings{});
+  const Eigen::Vector3d down(std::cos(theta), 0, -std::sin(theta));
+  const Eigen::Vector3d start = world.positionOf(1);
+  Slide out;
+  while (!world.done() && world.time() < until - 1e-9) world.step();
+  out.distance = (world.positionOf(1) - start).dot(down);
+  out.end = world.time();
+  return out;
+}
+
+/// A ramp (static box 4 m long, its top face through the origin) tilted by θ, and a body on
+/// it `lift` above its top face (along its normal), `along` down the slope from its middle.
+std::vector<std::string> onRamp(double theta, const std::string& shape, double lift, const std::string& extra) {
+  const Eigen::Vector3d normal(std::sin(theta), 0, std::cos(theta));
+  const Eigen::Vector3d rampCentre = -0.5 * normal;
+  const Eigen::Vector3d at = lift * normal;
+  char text[512];
+  std::snprintf(text, sizeof text, R"({ "name": "body", "shape": %s, "position": [%.12g, %.12g, %.12g]%s })", shape.c_str(),
+                at.x(), at.y(), at.z(), extra.c_str());
+  return {box("ramp", {4, 1, 0.5}, rampCentre, tilted(theta) + R"(, "static": true)"), text};
+}
+
+}  // namespace
+
+TEST_CASE("hybrid: a stack of 10 boxes rests 10 s within one tolerance, then sleeps") {
+  std::vector<std::string> bodies{floorBody};
+  for (int k = 0; k < 10; ++k) bodies.push_back(box("box" + std::to_string(k), {0.5, 0.5, 0.5}, {0, 0, 0.5 + k * 1.0001}));
+  const Rest r = rest(sceneOf(R"("duration": 10, "restitution": 0.5, "friction": 0.5)", bodies));
+  INFO("deepest " << r.deepest << " m, drift " << r.drift << " m, " << r.collisions << " collisions");
+  CHECK(r.deepest <= tol);
+  CHECK(r.drift <= tol);
+  CHECK(r.energyRises == 0);
+  CHECK(r.contactPoints > 0);
+  CHECK(r.asleep);
+}
+
+TEST_CASE("hybrid: a pyramid of 15 boxes rests within one tolerance") {
+  std::vector<std::string> bodies{floorBody};
+  for (int row = 0; row < 5; ++row)
+    for (int k = 0; k < 5 - row; ++k)
+      bodies.push_back(box("p" + std::to_string(row) + "_" + std::to_string(k), {0.5, 0.5, 0.5},
+                           {(k - (4 - row) / 2.0) * 1.05, 0, 0.5 + row * 1.0001}));
+  const Rest r = rest(sceneOf(R"("duration": 5, "restitution": 0.5, "friction": 0.5)", bodies));
+  INFO("deepest " << r.deepest << " m, drift " << r.drift << " m, " << r.collisions << " collisions");
+  CHECK(r.deepest <= tol);
+  CHECK(r.drift <= tol);
+  CHECK(r.energyRises == 0);
+}
+
+TEST_CASE("hybrid: a heavy box (100 times the mass) on a light one rests within one tolerance") {
+  const Rest r = rest(sceneOf(R"("duration": 5, "friction": 0.5)",
+                              {floorBody, box("light", {0.5, 0.5, 0.5}, {0, 0, 0.5001}, R"(, "density": 100)"),
+                               box("heavy", {0.5, 0.5, 0.5}, {0, 0, 1.5002}, R"(, "density": 10000)")}));
+  INFO("deepest " << r.deepest << " m, drift " << r.drift << " m");
+  CHECK(r.deepest <= tol);
+  CHECK(r.drift <= tol);
+  CHECK(r.energyRises == 0);
+}
+
+TEST_CASE("hybrid: a box on an incline below its friction angle stays, above it slides at g (sin θ − μ cos θ)") {
+  SECTION("below: 20 degrees, mu = 0.5 (friction angle 26.6 degrees): within 1 mm after 5 s") {
+    const double theta = 20 * M_PI / 180;
+    const Scene scene = sceneOf(R"("duration": 5, "friction": 0.5, "restitution": 0.3)",
+                                onRamp(theta, R"({"box": [0.25, 0.25, 0.25]})", 0.2502, tilted(theta)));
+    const Slide s = slide(scene, theta, 5);
+    INFO("moved " << s.distance << " m down the slope in " << s.end << " s");
+    CHECK(std::abs(s.distance) <= 1e-3);
+  }
+  SECTION("above: 35 degrees, mu = 0.3: 1/2 g (sin θ − μ cos θ) t^2 within 2% after 1.5 s") {
+    const double theta = 35 * M_PI / 180, mu = 0.3, t = 1.5;
+    const Scene scene = sceneOf(R"("duration": 1.5, "frame_rate": 120, "friction": 0.3, "restitution": 0.3)",
+                                onRamp(theta, R"({"box": [0.25, 0.25, 0.25]})", 0.2502, tilted(theta)));
+    const Slide s = slide(scene, theta, t);
+    const double expected = 0.5 * g * (std::sin(theta) - mu * std::cos(theta)) * s.end * s.end;
+    INFO("slid " << s.distance << " m in " << s.end << " s, expected " << expected);
+    CHECK(s.distance == Approx(expected).epsilon(0.02));
+  }
+}
+
+TEST_CASE("hybrid: a ball rolls down an incline without slipping at (5/7) g sin θ") {
+  const double theta = 20 * M_PI / 180, t = 1.5;
+  const Scene scene = sceneOf(R"("duration": 1.5, "frame_rate": 120, "friction": 0.5, "restitution": 0.3)",
+                              onRamp(theta, R"({"sphere": 0.1})", 0.1002, ""));
+  const Slide s = slide(scene, theta, t);
+  const double expected = 0.5 * (5.0 / 7.0) * g * std::sin(theta) * s.end * s.end;
+  INFO("rolled " << s.distance << " m in " << s.end << " s, expected " << expected);
+  CHECK(s.distance == Approx(expected).epsilon(0.02));
+}
+
+TEST_CASE("hybrid: a box pushed along the floor stops after v^2 / (2 mu g)") {
+  const double v = 2.0, mu = 0.4;
+  const Scene scene = sceneOf(R"("duration": 1.0, "frame_rate": 240, "friction": 0.4)",
+                              {floorBody, box("box", {0.2, 0.2, 0.05}, {-1, 0, 0.0502}, R"(, "velocity": [2, 0, 0])")});
+  World world(scene, WorldSettings{});
+  long rises = 0;
+  while (!world.done()) rises += world.step().counters.energyRises;
+  const double travelled = world.positionOf(1).x() + 1;
+  INFO("travelled " << travelled << " m");
+  CHECK(travelled == Approx(v * v / (2 * mu * g)).epsilon(0.02));
+  CHECK(world.stateOf(1).velocity.norm() < 1e-6);
+  CHECK(rises == 0);
+}
+
+TEST_CASE("hybrid: a second run ends in the same state, bit for bit") {
+  std::vector<std::string> bodies{floorBody};
+  for (int row = 0; row < 3; ++row)
+    for (int k = 0; k < 3 - row; ++k)
+      bodies.push_back(box("p" + std::to_string(row) + std::to_string(k), {0.5, 0.5, 0.5},
+                           {(k - (2 - row) / 2.0) * 1.05, 0.01 * k, 0.8 + row * 1.2}));
+  const Scene scene = sceneOf(R"("duration": 2, "friction": 0.5)", bodies);
+  World a(scene, WorldSettings{}), b(scene, WorldSettings{});
+  while (!a.done()) a.step();
+  while (!b.done()) b.step();
+  for (std::size_t k = 0; k < a.bodies().size(); ++k) {
+    CHECK(a.positionOf(int(k)) == b.positionOf(int(k)));
+    CHECK(a.stateOf(int(k)).velocity == b.stateOf(int(k)).velocity);
+  }
+}
+
+TEST_CASE("hybrid: the manifold of a box on a floor is its four corners, of a box half over an edge the overlap") {
+  const Shape<double> floor = Box<double>(Eigen::Vector3d(2, 2, 0.5));
+  const Shape<double> cube = Box<double>(Eigen::Vector3d(0.5, 0.5, 0.5));
+  Pose<double> floorPose;
+  floorPose.translation = Eigen::Vector3d(0, 0, -0.5);
+  Pose<double> cubePose;
+  cubePose.translation = Eigen::Vector3d(0, 0, 0.5001);
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  auto points = contactManifold(floor, floorPose, cube, cubePose, up, 2 * tol, Eigen::Vector3d::Zero(), 1e-4, tol);
+  REQUIRE(points.size() == 4);
+  for (const ManifoldPoint& p : points) {
+    CHECK(std::abs(std::abs(p.point.x()) - 0.5) < 1e-12);
+    CHECK(std::abs(std::abs(p.point.y()) - 0.5) < 1e-12);
+    CHECK(p.separation == Approx(1e-4).margin(1e-12));
+  }
+  // The cube moved half off the floor's edge at x = 2: the overlap is x in [1.5, 2].
+  cubePose.translation.x() = 2.0;
+  points = contactManifold(floor, floorPose, cube, cubePose, up, 2 * tol, Eigen::Vector3d::Zero(), 1e-4, tol);
+  REQUIRE(points.size() == 4);
+  for (const ManifoldPoint& p : points) CHECK((std::abs(p.point.x() - 1.5) < 1e-9 || std::abs(p.point.x() - 2.0) < 1e-9));
+  // A face normal is exact where GJK's is off by a milliradian.
+  const Eigen::Vector3d tiltedUp = Eigen::Vector3d(1e-3, 0, 1).normalized();
+  CHECK((faceNormal(floor, floorPose, cube, cubePose, tiltedUp, 0.01) - up).norm() < 1e-12);
+}
