@@ -21,20 +21,11 @@
 
 namespace chapter {
 
-/// The format of the figures, from `--format` (png, the default and what figures/ keeps;
-/// svg or pdf for vectors, e.g. for slides or a paper).
-inline std::string& figureFormat() {
-  static std::string format = "png";
-  return format;
-}
-
 /// Declares `--out DIR` (into `out`) and `--format png|svg|pdf` (into figureFormat()) on
 /// `app`: every chapter program's options for its figures.
 inline void addFigureOptions(CLI::App& app, std::string& out) {
   app.add_option("--out", out, "the folder for the figures, created if needed")->type_name("DIR")->capture_default_str();
-  app.add_option("--format", figureFormat(), "the figures' format")
-      ->check(CLI::IsMember({"png", "svg", "pdf"}))
-      ->capture_default_str();
+  addFormatOption(app);
 }
 
 /// The output folder from `--out DIR` (default: the current folder), created if needed, and

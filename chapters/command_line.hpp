@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 
 namespace chapter {
@@ -27,6 +28,31 @@ inline void parseOrExit(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::exit(app.exit(e) == 0 ? 0 : kUsageError);
   }
+}
+
+/// The format of the figures, from `--format` (png, the default and what figures/ keeps;
+/// svg or pdf for vectors, e.g. for slides or a paper).
+inline std::string& figureFormat() {
+  static std::string format = "png";
+  return format;
+}
+
+/// Declares `--format png|svg|pdf` (into figureFormat()) on `app`: every program that draws
+/// figures takes it.
+inline void addFormatOption(CLI::App& app) {
+  app.add_option("--format", figureFormat(), "the figures' format")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->capture_default_str();
+}
+
+/// gnuplot's terminal for figureFormat() (pngcairo, svg or pdfcairo), `width` x `height`
+/// pixels (a PDF at 96 pixels an inch), with `font`: the line a gnuplot script starts with.
+inline std::string gnuplotTerminal(double width, double height, const std::string& font) {
+  std::ostringstream line;
+  if (figureFormat() == "pdf") line << "set terminal pdfcairo size " << width / 96 << "in," << height / 96 << "in";
+  else line << "set terminal " << (figureFormat() == "svg" ? "svg" : "pngcairo") << " size " << width << "," << height;
+  line << " font '" << font << "'\n";
+  return line.str();
 }
 
 /// A progress bar on standard error: `done` of its 40 marks filled, then `what`, then

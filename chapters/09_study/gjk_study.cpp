@@ -3,8 +3,8 @@
 // exact reference. Prints one table per workload, float against double for ours, and ends
 // with the RATIO lines (ours-double median time / the best peer's, measured in this run).
 //
-//   gjk_study [--out DIR] [--quick] [--seed N]
-//   gjk_study --replot [--out DIR]
+//   gjk_study [--out DIR] [--quick] [--seed N] [--format png|svg|pdf]
+//   gjk_study --replot [--out DIR] [--format png|svg|pdf]
 //
 // Writes into DIR (default figures/study):
 // - gjk-table.md, gjk-float-vs-double.md: the tables of stdout as markdown (the docs page
@@ -64,6 +64,7 @@ Options parse(int argc, char** argv) {
   app.add_flag("--quick", o.study.quick, "a short run: fewer pairs and repetitions");
   app.add_option("--seed", o.study.seed, "seed of the shapes and poses")->type_name("N")->capture_default_str();
   app.add_flag("--replot", o.replot, "measure nothing: redraw the plots and write the key figures from the gjk-<group>.csv files already in DIR");
+  chapter::addFormatOption(app);
   chapter::parseOrExit(app, argc, argv);
   return o;
 }

@@ -4,6 +4,7 @@
 // against time for distance queries, time with its 99th percentile for boolean ones.
 #pragma once
 
+#include "../command_line.hpp"
 #include "../formatting.hpp"
 #include "gjk_study_workloads.hpp"
 
@@ -127,8 +128,8 @@ inline void writeTimePlot(const std::string& base, const std::string& name, cons
   constexpr double leftPx = 110;  // room for the method names
   std::ofstream gp(base + ".gp");
   gp << "# gnuplot script written by gjk_study (chapter 09): gnuplot " << name << ".gp\n";
-  gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
-  gp << "set output '" << name << ".png'\n";
+  gp << chapter::gnuplotTerminal(kImageW, kImageH, "sans,10");
+  gp << "set output '" << name << "." << chapter::figureFormat() << "'\n";
   gp << "set datafile separator ','\nset termoption noenhanced\n";
   gp << "set multiplot title \"GJK, " << g.title
      << ": median time per query (point) and 99th percentile (whisker) per method, one panel per shape; wrong answers counted at the right\"\n";
@@ -253,8 +254,8 @@ inline void plotGroup(const std::string& folder, const Group& g, const std::vect
   } else {
     std::ofstream gp(base + ".gp");
     gp << "# gnuplot script written by gjk_study (chapter 09): gnuplot " << name << ".gp\n";
-    gp << "set terminal pngcairo size " << kImageW << "," << kImageH << " font 'sans,10'\n";
-    gp << "set output '" << name << ".png'\n";
+    gp << chapter::gnuplotTerminal(kImageW, kImageH, "sans,10");
+    gp << "set output '" << name << "." << chapter::figureFormat() << "'\n";
     gp << "set datafile separator ','\nset termoption noenhanced\n";
     gp << "set multiplot title \"GJK, " << g.title << ": " << (g.boolean ? "wrong-answer rate" : "error")
        << " against median time per query, one point per method, one panel per shape\"\n";
@@ -303,7 +304,7 @@ inline void plotGroup(const std::string& folder, const Group& g, const std::vect
   if (haveGnuplot) {
     const std::string command = "cd '" + folder + "' && gnuplot '" + name + ".gp'";
     if (std::system(command.c_str()) != 0) std::fprintf(stderr, "gjk_study: gnuplot failed on %s.gp\n", base.c_str());
-    else std::printf("wrote %s.png\n", base.c_str());
+    else std::printf("wrote %s.%s\n", base.c_str(), chapter::figureFormat().c_str());
   }
 }
 

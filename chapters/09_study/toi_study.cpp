@@ -1,7 +1,7 @@
 // toi_study: the time-of-impact part of the comparative study (chapter 09).
 //
-//   toi_study [--out DIR] [--quick] [--ccd-data DIR] [--seed N]
-//   toi_study --replot [--out DIR]
+//   toi_study [--out DIR] [--quick] [--ccd-data DIR] [--seed N] [--format png|svg|pdf]
+//   toi_study --replot [--out DIR] [--format png|svg|pdf]
 //
 // Runs every method of toi_comparisons.hpp on every workload of workloads.hpp (each query
 // judged against the independent long-double reference), prints the tables (per workload:
@@ -56,6 +56,7 @@ Options parse(int argc, char** argv) {
       ->type_name("DIR");
   app.add_option("--seed", o.study.seed, "seed of the workloads")->type_name("N")->capture_default_str();
   app.add_flag("--replot", o.replot, "measure nothing: redraw the plots and write the key figures from the toi-<workload>.csv files already in DIR");
+  chapter::addFormatOption(app);
   chapter::parseOrExit(app, argc, argv);
   return o;
 }

@@ -4,6 +4,7 @@
 // curve per method, with the share of the reference's hits each setting missed below.
 #pragma once
 
+#include "../command_line.hpp"
 #include "toi_comparisons.hpp"
 
 #include <algorithm>
@@ -105,8 +106,8 @@ inline void writeWorkloadPlot(const std::string& base, const std::string& worklo
   const double yBottom = std::pow(10.0, std::floor(std::log10(yLo)) - 1);
   std::ofstream gp(base + ".gp");
   gp << "# gnuplot script written by toi_study (chapter 09): gnuplot " << std::filesystem::path(base + ".gp").filename().string() << "\n";
-  gp << "set terminal pngcairo size 1300,900 font 'sans,10'\n";
-  gp << "set output '" << std::filesystem::path(base + ".png").filename().string() << "'\n";
+  gp << chapter::gnuplotTerminal(1300, 900, "sans,10");
+  gp << "set output '" << std::filesystem::path(base + "." + chapter::figureFormat()).filename().string() << "'\n";
   gp << "set datafile separator ','\nset termoption noenhanced\n";
   gp << "set multiplot title \"time of impact, workload " << workload << " (" << queries << " queries: " << refHits
      << " hits and " << clearMisses << " clear misses by the reference)\"\n";
@@ -165,7 +166,7 @@ inline void plotWorkload(const std::string& folder, const std::string& workload,
   if (haveGnuplot) {
     const std::string command = "cd '" + folder + "' && gnuplot 'toi-" + workload + ".gp'";
     if (std::system(command.c_str()) != 0) std::fprintf(stderr, "toi_study: gnuplot failed on %s.gp\n", base.c_str());
-    else std::printf("wrote %s.png\n", base.c_str());
+    else std::printf("wrote %s.%s\n", base.c_str(), chapter::figureFormat().c_str());
   }
 }
 
