@@ -256,3 +256,25 @@ TEST_CASE("docs 07 names every key of the scene file, every option, every column
     CHECK(named(entry.path().filename().string()));
   }
 }
+
+TEST_CASE("gjkx_simulate --solver paper runs §5 as the paper wrote it, and says so", "[simulate]") {
+  const fs::path out = freshFolder("paper_solver");
+  const Result r = simulate("\"" + std::string(GJKX_SCENES) + "/ball_drop.json\" --out \"" + out.string() +
+                            "\" --quiet --checks --solver paper");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const auto keys = summary(r.output);
+  REQUIRE(keys.count("tunnelled") == 1);
+  CHECK(keys.at("tunnelled") == "0");
+  std::ifstream file(out / "summary.txt");
+  std::string text;
+  for (std::string line; std::getline(file, line);) text += line + "\n";
+  CHECK(text.find(" solver=paper variant=paper ") != std::string::npos);
+  CHECK(text.find(" warm_starts=off coherence=off ") != std::string::npos);
+  // The paper's solver runs the paper's extrusion test only.
+  const Result refused = simulate("\"" + std::string(GJKX_SCENES) + "/ball_drop.json\" --out \"" + out.string() +
+                                  "\" --quiet --solver paper --variant certified");
+  CHECK(refused.status == 2);
+  CHECK(refused.output.find("--solver paper runs the paper's extrusion test") != std::string::npos);
+  fs::remove_all(out);
+}
