@@ -76,9 +76,9 @@ int main(int argc, char** argv) {
   app.add_option("--scalar", scalar, "override the scene's scalar type")->check(CLI::IsMember({"float", "double"}));
   app.add_option("--solver", solver,
                  "the time-of-impact solver: §5 exactly as the paper wrote it (paper: the paper's extrusion test, no "
-                 "refinement, no warm start) or this project's (gjkx: its refinements, --variant's test)")
-      ->check(CLI::IsMember({"paper", "gjkx"}))
-      ->capture_default_str();
+                 "refinement, no warm start) or this project's (gjkx: its refinements, --variant's test); default: "
+                 "the scene's \"solver\", else gjkx")
+      ->check(CLI::IsMember({"paper", "gjkx"}));
   app.add_option("--variant", variant, "the extrusion test of the gjkx solver: the paper's or the certified one")
       ->check(CLI::IsMember({"paper", "certified"}))
       ->capture_default_str();
@@ -104,19 +104,23 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
-  if (solver == "paper") {
-    if (app.count("--variant") && variant != "paper") {
-      std::cerr << "gjkx_simulate: --solver paper runs the paper's extrusion test; --variant " << variant
-                << " needs --solver gjkx\n";
-      return 2;
-    }
-    variant = "paper";
-  }
 
   gjkx::Scene scene;
   std::unique_ptr<gjkx::World> world;
   try {
     scene = gjkx::loadScene(scenePath);
+    // The solver: the scene's (its key "solver"), unless --solver overrides it.
+    if (app.count("--solver")) scene.run.solver = solver == "paper" ? gjkx::ToiSolverMode::Paper : gjkx::ToiSolverMode::Gjkx;
+    solver = gjkx::toString(scene.run.solver);
+    if (solver == "paper") {
+      if (app.count("--variant") && variant != "paper") {
+        std::cerr << "gjkx_simulate: --solver paper runs the paper's extrusion test (as does a scene's \"solver\": "
+                     "\"paper\"); --variant "
+                  << variant << " needs --solver gjkx\n";
+        return 2;
+      }
+      variant = "paper";
+    }
     if (ordering == "timewarp") scene.run.ordering = gjkx::Ordering::Timewarp;
     if (ordering == "toi_heap") scene.run.ordering = gjkx::Ordering::ToiHeap;
     if (ordering == "fixed_step") scene.run.ordering = gjkx::Ordering::FixedStep;
@@ -127,7 +131,7 @@ int main(int argc, char** argv) {
     if (frameRate > 0) scene.frameRate = frameRate;
     gjkx::WorldSettings settings;
     settings.variant = variant == "paper" ? gjkx::ExtrusionVariant::Paper : gjkx::ExtrusionVariant::Certified;
-    settings.solver = solver == "paper" ? gjkx::ToiSolverMode::Paper : gjkx::ToiSolverMode::Gjkx;
+    settings.solver = scene.run.solver;
     noChecks = noChecks || !checks;
     settings.checks = !noChecks;
     settings.warmStarts = !coldStarts;

@@ -226,3 +226,11 @@ TEST_CASE("scene: a cylinder is [radius, half_length] along z, each positive") {
   CHECK_THAT(errorOf(sceneWith(R"("shape": {"cylinder": 0.1}, "position": [0, 0, 1])")),
              Catch::Contains("shape.cylinder") && Catch::Contains("[radius, half_length]"));
 }
+
+TEST_CASE("scene: the key solver asks for §5 as the paper wrote it, and a bad value is named") {
+  const std::string bodies = R"("bodies": [{ "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1] }] })";
+  CHECK(parseScene(R"({ "duration": 1, )" + bodies).run.solver == ToiSolverMode::Gjkx);
+  CHECK(parseScene(R"({ "duration": 1, "solver": "paper", )" + bodies).run.solver == ToiSolverMode::Paper);
+  CHECK(parseScene(R"({ "duration": 1, "solver": "gjkx", )" + bodies).run.solver == ToiSolverMode::Gjkx);
+  CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "solver": "brent", )" + bodies), Catch::Contains("solver"));
+}

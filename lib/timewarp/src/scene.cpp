@@ -239,7 +239,7 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
   if (!root.is_object()) where.fail("", "(the whole file) must be a JSON object");
   rejectUnknownKeys(root,
                     {"gravity", "frame_rate", "duration", "collision_tolerance", "restitution", "friction", "scalar",
-                     "ordering", "fixed_substeps", "bodies", "contact"},
+                     "ordering", "fixed_substeps", "bodies", "contact", "solver"},
                     where, "");
   for (const char* required : {"duration", "bodies"})
     if (!root.contains(required)) where.fail(required, "is missing");
@@ -272,6 +272,12 @@ Scene parseScene(const std::string& textIn, const std::string& source) {
     if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 100000)
       where.fail("fixed_substeps", "must be an integer from 1 to 100000, got " + n.dump());
     scene.run.fixedSubsteps = n.get<int>();
+  }
+  if (root.contains("solver")) {
+    const std::string s = text(root["solver"], where, "solver");
+    if (s == "paper") scene.run.solver = ToiSolverMode::Paper;
+    else if (s == "gjkx") scene.run.solver = ToiSolverMode::Gjkx;
+    else where.fail("solver", "must be \"paper\" or \"gjkx\", got \"" + s + "\"");
   }
   if (root.contains("contact")) {
     const std::string s = text(root["contact"], where, "contact");

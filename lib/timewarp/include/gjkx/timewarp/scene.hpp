@@ -31,6 +31,7 @@
 /// infinity, a negative radius or extent, a zero quaternion.
 #pragma once
 
+#include <gjkx/brent/toi_result.hpp>
 #include <gjkx/mesh/convex_decomposition.hpp>
 #include <gjkx/motion/vector.hpp>
 
@@ -139,7 +140,7 @@ struct BodySpec {
   bool isStatic = false;
 };
 
-/// How a scene asks to be run (the file's keys `scalar`, `ordering`, `fixed_substeps` and `contact`),
+/// How a scene asks to be run (the file's keys `scalar`, `ordering`, `fixed_substeps`, `contact` and `solver`),
 /// kept apart from what the scene is; gjkx_simulate's options override them, and the
 /// world's own settings (settings.hpp) say the rest.
 struct SceneRun {
@@ -151,6 +152,10 @@ struct SceneRun {
   int fixedSubsteps = 8;
   /// How resting contact is modelled (the key `contact`; the hybrid when it is absent).
   ContactModel contact = ContactModel::Hybrid;
+  /// The time-of-impact solver (the key `solver`: `"gjkx"`, this project's, when it is absent,
+  /// or `"paper"`, §5 exactly as the paper wrote it, `ToiSettings::paper()`); a world runs the
+  /// paper's when its scene or its settings (`WorldSettings::solver`) ask for it.
+  ToiSolverMode solver = ToiSolverMode::Gjkx;
 };
 
 /// A whole scene: what is simulated (its world's constants and its bodies), and how it asks to be run.
