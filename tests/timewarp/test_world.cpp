@@ -599,15 +599,9 @@ TEST_CASE("Timewarp, step by step: three balls, each body's local time, its roll
         { "name": "ball2", "shape": {"sphere": 0.1}, "position": [0.65, 0, 0], "velocity": [-1.5, 0, 0] } ] })";
   const std::string settings0 = R"({ "duration": 0.5, "frame_rate": 2, "gravity": [0, 0, 0], "restitution": 0.5,
       "friction": 0, "scalar": "double", )";
-  // The paper's model of contact, microcollisions, which runs a frame as one interval; the
-  // hybrid model cuts frames into shorter intervals. A scene file that does not know the key
-  // `contact` yet runs every frame as one interval already.
-  Scene scene;
-  try {
-    scene = parseScene(settings0 + R"("contact": "microcollisions", )" + bodies);
-  } catch (const std::invalid_argument&) {
-    scene = parseScene(settings0 + bodies);
-  }
+  // The paper's model of contact, microcollisions, which runs a frame as one interval (the
+  // hybrid cuts frames into shorter intervals: another trace).
+  const Scene scene = parseScene(settings0 + R"("contact": "microcollisions", )" + bodies);
   WorldSettings settings;
   settings.trace = true;
   World world(scene, settings);
