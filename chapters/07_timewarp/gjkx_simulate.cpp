@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file: bodies in free flight, collisions found by the paper's solver and "
                "ordered by Timewarp (or the scene's ordering), written as CSV.",
                "gjkx_simulate"};
-  std::string scenePath, out = ".", ordering, scalar, variant = "certified", solver = "gjkx", logPath, meshCache;
+  std::string scenePath, out = ".", ordering, contact, scalar, variant = "certified", solver = "gjkx", logPath, meshCache;
   double tolerance = 0, duration = 0, frameRate = 0, decomposeBudget = 0;
   bool checks = false, noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
   gjkx::ImpulseSettings impulse;
@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
   app.add_option("--mesh-cache", meshCache,
                  "folder of the mesh decomposition cache (default: $GJKX_MESH_CACHE, else $XDG_CACHE_HOME/gjkx, "
                  "else ~/.cache/gjkx; an empty string: no cache)");
+  app.add_option("--contact", contact,
+                 "override the scene's model of resting contact: the paper's microcollisions, or the hybrid "
+                 "(collisions as events, resting contacts by a contact solver; the default of a scene without the key)")
+      ->check(CLI::IsMember({"microcollisions", "hybrid"}));
   app.add_option("--decompose-budget", decomposeBudget,
                  "seconds each mesh's convex decomposition may take before the mesh's convex hull is used instead "
                  "(over the scene's decomposition.budget_s; default: the scene's, else 30)")
@@ -124,6 +128,8 @@ int main(int argc, char** argv) {
     if (ordering == "timewarp") scene.run.ordering = gjkx::Ordering::Timewarp;
     if (ordering == "toi_heap") scene.run.ordering = gjkx::Ordering::ToiHeap;
     if (ordering == "fixed_step") scene.run.ordering = gjkx::Ordering::FixedStep;
+    if (contact == "microcollisions") scene.run.contact = gjkx::ContactModel::Microcollisions;
+    if (contact == "hybrid") scene.run.contact = gjkx::ContactModel::Hybrid;
     if (scalar == "float") scene.run.scalar = gjkx::CollisionScalar::Float;
     if (scalar == "double") scene.run.scalar = gjkx::CollisionScalar::Double;
     if (tolerance > 0) scene.collisionTolerance = tolerance;
@@ -233,7 +239,8 @@ int main(int argc, char** argv) {
   std::ofstream summary(out + "/summary.txt");
   summary << line << "\nRUN scene=" << scenePath << " bodies=" << world->bodies().size()
           << " scalar=" << (scene.run.scalar == gjkx::CollisionScalar::Float ? "float" : "double") << " solver=" << solver << " variant=" << variant
-          << " ordering=" << gjkx::orderingName(scene.run.ordering) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
+          << " ordering=" << gjkx::orderingName(scene.run.ordering)
+          << " contact=" << gjkx::contactModelName(scene.run.contact) << " tolerance=" << scene.collisionTolerance << " frame_rate=" << scene.frameRate
           << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts || solver == "paper" ? "off" : "on")
           << " coherence=" << (coldStarts || noCoherence || solver == "paper" ? "off" : "on")
           << " front_tracking=" << (noFronts ? "off" : "on") << " impulse_tolerance=" << impulse.absoluteTolerance

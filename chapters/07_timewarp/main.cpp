@@ -59,7 +59,7 @@ Scene cradle(Ordering ordering) {
               R"(", "shape": {"sphere": 0.1}, "position": [)" + format("%.2f", k == 0 ? -0.01 : 0.22 * k) +
               R"(, 0, 0], "velocity": [)" + (k == 0 ? "1" : "0") + ", 0, 0] }";
   return parseScene(R"({ "gravity": [0, 0, 0], "frame_rate": 24, "duration": )" + format("%.6f", kFrames / kFrameRate) +
-                        R"(, "restitution": 1, "friction": 0, "scalar": "double", "ordering": ")" +
+                        R"(, "restitution": 1, "friction": 0, "scalar": "double", "contact": "microcollisions", "ordering": ")" +
                         orderingName(ordering) + R"(", "bodies": [)" + bodies + "] }",
                     "cradle");
 }

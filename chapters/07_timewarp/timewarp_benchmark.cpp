@@ -1,8 +1,11 @@
 // The Timewarp benchmark (docs/07_timewarp.md): a few hundred convex bodies (boxes,
 // spheres, capsules, small polytopes) dropped into a box, run under each ordering from
-// the same scene. Prints, per ordering: wall time per simulated second, collisions,
-// rollbacks per frame, pair checks, and the split of the wall time by part; then
+// the same scene with one model of resting contact (--contact, the hybrid by default), and
+// Timewarp under the other model. Prints, per run: wall time per simulated second,
+// collisions, rollbacks per frame, pair checks, and the split of the wall time by part; then
 //   RATIO timewarp_vs_toi_heap=<heap wall / timewarp wall>
+//   RATIO <other>_vs_<chosen>=<Timewarp's wall under the other model / under the chosen>
+//   RATIO timewarp_<chosen>_wall_per_sim_s=<Timewarp's wall per simulated second>
 // The independent checks are off (they are not part of the method); the collisions
 // columns show whether the orderings resolved the same number of impacts.
 #include "../command_line.hpp"
@@ -79,22 +82,35 @@ int main(int argc, char** argv) {
                "timewarp_benchmark"};
   int count = 200;
   double duration = 2.0;
-  std::string scalar = "float";
+  std::string scalar = "float", contact = "hybrid";
   bool fixedToo = true;
   app.add_option("--bodies", count, "moving bodies")->check(CLI::Range(1, 5000));
   app.add_option("--duration", duration, "simulated seconds")->check(CLI::PositiveNumber);
   app.add_option("--scalar", scalar, "collision detection in float or double")->check(CLI::IsMember({"float", "double"}));
   app.add_flag("!--no-fixed-step", fixedToo, "leave out the fixed-step ordering");
+  app.add_option("--contact", contact, "the model of resting contact of the orderings' runs (Timewarp is also run under the other)")
+      ->check(CLI::IsMember({"hybrid", "microcollisions"}))
+      ->capture_default_str();
   chapter::parseOrExit(app, argc, argv);
 
-  std::printf("%d bodies into a box, %.2f s simulated, collision detection in %s\n", count, duration, scalar.c_str());
+  std::printf("%d bodies into a box, %.2f s simulated, collision detection in %s, contact model %s\n", count, duration,
+              scalar.c_str(), contact.c_str());
   std::printf("%-11s %10s %9s %9s %11s %10s %8s | %6s %6s %6s %6s %6s\n", "ordering", "wall/sim_s", "collisions",
               "rollbacks", "rollbk/frame", "checks", "brent", "integ", "bounds", "detect", "impuls", "order");
-  double wallTimewarp = 0, wallHeap = 0;
-  for (gjkx::Ordering ordering : {gjkx::Ordering::Timewarp, gjkx::Ordering::ToiHeap, gjkx::Ordering::FixedStep}) {
+  const gjkx::ContactModel chosen =
+      contact == "hybrid" ? gjkx::ContactModel::Hybrid : gjkx::ContactModel::Microcollisions;
+  const gjkx::ContactModel other =
+      chosen == gjkx::ContactModel::Hybrid ? gjkx::ContactModel::Microcollisions : gjkx::ContactModel::Hybrid;
+  double wallTimewarp = 0, wallHeap = 0, wallOther = 0;
+  // The three orderings under the chosen contact model, then Timewarp under the other.
+  const std::vector<std::pair<gjkx::Ordering, gjkx::ContactModel>> runs = {
+      {gjkx::Ordering::Timewarp, chosen}, {gjkx::Ordering::ToiHeap, chosen}, {gjkx::Ordering::FixedStep, chosen},
+      {gjkx::Ordering::Timewarp, other}};
+  for (const auto& [ordering, model] : runs) {
     if (ordering == gjkx::Ordering::FixedStep && !fixedToo) continue;
     gjkx::Scene scene = fallingIntoABox(count, duration, 2026);
     scene.run.ordering = ordering;
+    scene.run.contact = model;
     scene.run.scalar = scalar == "float" ? gjkx::CollisionScalar::Float : gjkx::CollisionScalar::Double;
     gjkx::WorldSettings settings;
     settings.checks = false;
@@ -122,15 +138,21 @@ int main(int argc, char** argv) {
       parts += r.parts;
     }
     auto share = [&](double part) { return 100 * part / wall; };
+    const std::string name = std::string(gjkx::orderingName(ordering)) + (model == chosen ? "" : "*");
     std::printf("%-11s %10.3f %9ld %9ld %11.2f %10ld %8ld | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%%\n",
-                gjkx::orderingName(ordering), wall / world->time(), total.collisions, total.rollbacks,
+                name.c_str(), wall / world->time(), total.collisions, total.rollbacks,
                 double(total.rollbacks) / world->frameCount(), total.collisionChecks, total.brentIterations,
                 share(parts.integration), share(parts.bounds), share(parts.collisionDetection), share(parts.impulses),
                 share(parts.ordering));
     std::fflush(stdout);
-    if (ordering == gjkx::Ordering::Timewarp) wallTimewarp = wall;
+    if (ordering == gjkx::Ordering::Timewarp && model == chosen) wallTimewarp = wall;
+    if (ordering == gjkx::Ordering::Timewarp && model != chosen) wallOther = wall;
     if (ordering == gjkx::Ordering::ToiHeap) wallHeap = wall;
   }
+  std::printf("(* Timewarp under the %s model)\n", gjkx::contactModelName(other));
   std::printf("RATIO timewarp_vs_toi_heap=%.3f\n", wallHeap / wallTimewarp);
+  std::printf("RATIO %s_vs_%s=%.3f\n", gjkx::contactModelName(other), gjkx::contactModelName(chosen),
+              wallOther / wallTimewarp);
+  std::printf("RATIO timewarp_%s_wall_per_sim_s=%.3f\n", gjkx::contactModelName(chosen), wallTimewarp / duration);
   return 0;
 }

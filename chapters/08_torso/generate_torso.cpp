@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     std::string json = "{\n  \"gravity\": [0, 0, -9.81],\n  \"frame_rate\": 24,\n  \"duration\": " +
                        number(layout.duration) +
                        ",\n  \"collision_tolerance\": 0.000345267,\n  \"restitution\": 0.7,\n  \"friction\": 0.4,\n"
-                       "  \"scalar\": \"float\",\n  \"ordering\": \"timewarp\",\n  \"bodies\": [\n"
+                       "  \"scalar\": \"float\",\n  \"ordering\": \"timewarp\",\n  \"contact\": \"microcollisions\",\n  \"bodies\": [\n"
                        "    { \"name\": \"floor\", \"shape\": {\"box\": [" + number(torso::floorHalfWidth) + ", " +
                        number(torso::floorHalfWidth) + ", 0.1]}, \"position\": [0, 0, -0.1], "
                        "\"static\": true },\n"

@@ -35,7 +35,7 @@ std::string errorOf(const std::string& text) {
 TEST_CASE("scene: every key is read") {
   const Scene scene = parseScene(R"({ "gravity": [0, -9.8, 0], "frame_rate": 30, "duration": 2,
       "collision_tolerance": 0.001, "restitution": 0.5, "friction": 0.25, "scalar": "double",
-      "ordering": "toi_heap", "fixed_substeps": 4,
+      "ordering": "toi_heap", "fixed_substeps": 4, "contact": "microcollisions",
       "bodies": [ { "name": "b", "shape": {"capsule": [0.1, 0.3]}, "position": [1, 2, 3],
                     "orientation": [0, 0, 0, 2], "velocity": [1, 0, 0], "angular_velocity": [0, 0, 1],
                     "density": 500, "static": false },
@@ -49,6 +49,7 @@ TEST_CASE("scene: every key is read") {
   CHECK(scene.run.scalar == CollisionScalar::Double);
   CHECK(scene.run.ordering == Ordering::ToiHeap);
   CHECK(scene.run.fixedSubsteps == 4);
+  CHECK(scene.run.contact == ContactModel::Microcollisions);
   REQUIRE(scene.bodies.size() == 2);
   const BodySpec& b = scene.bodies[0];
   CHECK(b.shape.kind == ShapeSpec::Kind::Capsule);
@@ -68,6 +69,7 @@ TEST_CASE("scene: defaults are the paper's settings") {
   CHECK(scene.friction == 0.4);
   CHECK(scene.run.scalar == CollisionScalar::Float);
   CHECK(scene.run.ordering == Ordering::Timewarp);
+  CHECK(scene.run.contact == ContactModel::Hybrid);  // the hybrid unless the scene asks for the paper's model
   CHECK(scene.collisionTolerance == Approx(std::sqrt(double(std::numeric_limits<float>::epsilon()))).epsilon(1e-6));
 }
 
@@ -99,6 +101,8 @@ TEST_CASE("scene: bad input names the body and the field") {
        {"body 'ball'", "'static'"}},
       {"an unknown ordering", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])", R"("ordering": "fast",)"),
        {"'ordering'"}},
+      {"an unknown contact model", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 1])", R"("contact": "glue",)"),
+       {"'contact'", "\"microcollisions\" or \"hybrid\""}},
       {"a flat polytope", sceneWith(R"("shape": {"polytope": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}, "position": [0, 0, 1])"),
        {"body 'ball'", "'shape'"}},
       {"two bodies overlapping at the start", sceneWith(R"("shape": {"sphere": 0.1}, "position": [0, 0, 0.05])"),

@@ -98,7 +98,10 @@ FrameReport World::step() {
   for (const WorldBody& body : bodies_)
     if (!body.rigid.isStatic()) fastest = std::max(fastest, body.path.end.angularVelocity.norm());
   const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / (0.25 * M_PI), 1e6))); };
-  int intervals = std::clamp(quarterTurns(fastest), 1, tuning.maxIntervals);
+  // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
+  // collision until the next, so its frames are cut into StepTuning::contactIntervals at least.
+  const int fewest = scene_.run.contact == ContactModel::Hybrid ? tuning.contactIntervals : 1;
+  int intervals = std::clamp(std::max(fewest, quarterTurns(fastest)), 1, tuning.maxIntervals);
   // A collision can spin a light body up past that within an interval (a cartilage of a few
   // grams struck at the crash: 370 rad/s); then the frame is run again from its start in
   // intervals short enough for the new spin, from what the bodies were at T0. The same
