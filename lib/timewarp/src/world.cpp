@@ -99,8 +99,11 @@ FrameReport World::step() {
     if (!body.rigid.isStatic()) fastest = std::max(fastest, body.path.end.angularVelocity.norm());
   const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / (0.25 * M_PI), 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
-  // collision until the next, so its frames are cut into StepTuning::contactIntervals at least.
-  const int fewest = scene_.run.contact == ContactModel::Hybrid ? tuning.contactIntervals : 1;
+  // collision until the next, so under gravity its frames are cut into
+  // StepTuning::contactIntervals at least (fixed steps keep their own: `fixed_substeps` per frame).
+  const bool cut = scene_.run.contact == ContactModel::Hybrid && scene_.gravity.squaredNorm() > 0 &&
+                   scene_.run.ordering != Ordering::FixedStep;
+  const int fewest = cut ? tuning.contactIntervals : 1;
   int intervals = std::clamp(std::max(fewest, quarterTurns(fastest)), 1, tuning.maxIntervals);
   // A collision can spin a light body up past that within an interval (a cartilage of a few
   // grams struck at the crash: 370 rad/s); then the frame is run again from its start in
