@@ -332,7 +332,8 @@ std::vector<std::vector<int>> groupsOf(const StepContext& step, const std::vecto
 
 /// Position projection (non-linear Gauss-Seidel on positions): each manifold's deepest
 /// point nearer than rest moves its bodies apart along the normal, in proportion to their
-/// inverse masses. Positions only: no velocity, so no energy, is added.
+/// inverse masses, or, where one rests on the other, the upper one alone (shock
+/// propagation). Positions only: no velocity, so no kinetic energy, is added.
 void project(StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
              std::vector<BodyState>& states) {
   const double rest = step.band(step.settings.tuning.restSeparation);
@@ -343,8 +344,9 @@ void project(StepContext& step, const std::vector<int>& group, std::vector<Manif
   // From the bottom up, as the velocities (a stack is lifted off the floor in one pass), until
   // nothing is pushed or StepTuning::positionIterations passes.
   std::vector<Manifold*> order = manifolds;
-  if (step.scene.gravity.squaredNorm() > 0) {
-    const Eigen::Vector3d up = -step.scene.gravity.normalized();
+  const Eigen::Vector3d up = step.scene.gravity.squaredNorm() > 0 ? Eigen::Vector3d(-step.scene.gravity.normalized())
+                                                                  : Eigen::Vector3d::Zero();
+  if (up.squaredNorm() > 0) {
     const auto height = [&](const Manifold* m) { return up.dot(m->points.front().point); };
     std::stable_sort(order.begin(), order.end(), [&](const Manifold* a, const Manifold* b) { return height(a) < height(b); });
   }
@@ -355,8 +357,17 @@ void project(StepContext& step, const std::vector<int>& group, std::vector<Manif
       double deepest = 1e300;
       for (const ManifoldPoint& p : m->points)
         deepest = std::min(deepest, p.separation + m->normal.dot(moved[m->j] - moved[m->i]));
-      const double wi = weight(m->i), wj = weight(m->j);
+      double wi = weight(m->i), wj = weight(m->j);
       if (deepest >= rest || wi + wj <= 0) continue;
+      // Shock propagation (Guendelman, Bridson and Fedkiw 2003): where one body rests on the
+      // other (the normal within 45 degrees of the vertical), only the upper one moves, so a
+      // pass from the bottom up lifts a pyramid off its floor without pushing a lower row
+      // back down.
+      if (up.squaredNorm() > 0) {
+        const double along = m->normal.dot(up);
+        if (along > std::sqrt(0.5) && wj > 0) wi = 0;
+        if (along < -std::sqrt(0.5) && wi > 0) wj = 0;
+      }
       const Eigen::Vector3d push = (rest - deepest) / (wi + wj) * m->normal;
       moved[m->i] -= wi * push;
       moved[m->j] += wj * push;
@@ -434,12 +445,6 @@ bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double 
 
 template bool solveContacts<float>(StepContext&, NarrowPhase<float>&, double, double);
 template bool solveContacts<double>(StepContext&, NarrowPhase<double>&, double, double);
-
-void releaseContacts(StepContext& step, int b) {
-  auto& pairs = step.frame.contactPairs;
-  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == b || p.second == b; }),
-              pairs.end());
-}
 
 void wakeGroup(StepContext& step, int b) {
   WorldBody& body = step.bodies[b];

@@ -141,6 +141,12 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
   touched(step, hit.i, hit.pieceI, hit.j, hit.pieceJ);
   links.push_back({hit, true, patch ? std::optional<ContactPatch>(*patch) : std::nullopt, true});
   linkIndex.emplace(step.piecePairKey(hit.i, hit.pieceI, hit.j, hit.pieceJ), 0);
+  // A contact the pass reaches closes when it approaches at all; under the hybrid, only when
+  // it would close its rest separation within a frame: slower than that its contact solver
+  // holds it (a resting pyramid approaches by round-off at every contact, and the pass
+  // otherwise ran through all of it at every collision).
+  const double linkSpeed = step.hybrid() ? std::max(tuning.approachSpeed, step.band(tuning.restSeparation) * step.scene.frameRate)
+                                         : tuning.approachSpeed;
   std::deque<std::size_t> closing{0};
   for (int impulses = 0; !closing.empty() && impulses < tuning.instantImpulses;) {
     const std::size_t k = closing.front();
@@ -149,7 +155,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     // Each contact is looked at with the states of this pass, the hit's too (its check
     // chose its point on states not renormalized), and one queued by an earlier link with
     // the velocities that link left.
-    if (closingSpeed(links[k]) >= -tuning.approachSpeed) continue;
+    if (closingSpeed(links[k]) >= -(k == 0 ? tuning.approachSpeed : linkSpeed)) continue;
     ++impulses;
     const Hit struck = links[k].hit;  // (a copy: `links` grows below)
     step.frame.collidedPairs.emplace_back(struck.i, struck.j);
@@ -162,7 +168,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
       for (const FrameState::Touching& t : step.frame.touching[b]) {
         const std::size_t n = linkOf(t.i, t.pi, t.j, t.pj);
         if (!links[n].inContact || links[n].queued) continue;
-        if (closingSpeed(links[n]) < -tuning.approachSpeed) {
+        if (closingSpeed(links[n]) < -linkSpeed) {
           links[n].queued = true;
           closing.push_back(n);
         }
@@ -187,8 +193,6 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     // A path shorter than `minPath` is not worth keeping (and may not exist in float).
     const double t1 = end - tc > minPath ? end : tc + minPath;
     if (!flyFrom(step, b, s.state, tc, t1)) return {};
-    // Its path is no longer the contact solver's: its contacts go back to the pair checks.
-    if (step.hybrid()) releaseContacts(step, b);
   }
   return flown;
 }

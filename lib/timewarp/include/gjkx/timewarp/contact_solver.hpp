@@ -72,9 +72,9 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
 
 /// The hybrid's part of a step at the start of the interval [t0, t1]: finds the contacts,
 /// forms the groups, projects and solves each, and flies its bodies over the interval on
-/// the solved velocities (gravity off: WorldBody::contactFlight). The contact pairs are kept
-/// out of the ordering's pair checks while their bodies keep the solver's paths
-/// (FrameState::contactPairs). False on a spin overflow.
+/// the solved velocities (gravity off: WorldBody::contactFlight). The contact pairs
+/// (FrameState::contactPairs) are checked by the ordering with StepTuning::contactCheckBand
+/// over the interval. False on a spin overflow.
 template <typename S>
 bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double t1);
 
@@ -86,8 +86,5 @@ void sleepGroups(StepContext& step, double T1);
 /// Wakes body b and every body that fell asleep in the same group.
 void wakeGroup(StepContext& step, int b);
 
-/// A struck body's contact pairs go back to the ordering's pair checks: its path is no
-/// longer the solver's.
-void releaseContacts(StepContext& step, int b);
 
 }  // namespace gjkx

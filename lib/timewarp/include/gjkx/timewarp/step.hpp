@@ -83,8 +83,8 @@ struct FrameState {
     double angularSpeed = 0;  ///< its angular speed (rad/s)
     std::string what;       ///< which body, how far it turned
   } spinOverflow;           ///< (see the struct)
-  /// The hybrid model's contact pairs (i < j, sorted): kept out of the ordering's pair
-  /// checks while both bodies keep the solver's paths (contact_solver.hpp).
+  /// The hybrid model's contact pairs of the interval (i < j, sorted): the ordering checks
+  /// them with StepTuning::contactCheckBand, not the tolerance (contact_solver.hpp).
   std::vector<std::pair<int, int>> contactPairs;
   /// The hybrid model's contact groups of the last interval (contact_solver.hpp).
   std::vector<std::vector<int>> groups;
