@@ -3,6 +3,7 @@
 
 #include <gjkx/timewarp/contact.hpp>
 #include <gjkx/timewarp/narrow_phase.hpp>
+#include <gjkx/timewarp/sleep.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -469,26 +470,13 @@ void sleepGroups(StepContext& step, double T1) {
     for (int b : group) {
       grouped[b] = 1;
       WorldBody& body = bodies[b];
-      // Slow: too little kinetic energy to lift it out of the band (sleep.hpp's test).
-      const BodyState end = body.path.stateAt(T1);
-      const bool slow = g > 0 && body.rigid.kineticEnergy(end) * body.rigid.inverseMass() / g <
-                                     step.band(step.settings.tuning.settleEnergy);
-      body.slowFor = slow ? body.slowFor + frameLength : 0.0;
+      body.slowFor = isSlow(step, body, body.path.stateAt(T1)) ? body.slowFor + frameLength : 0.0;
       sleeps = sleeps && body.slowFor >= step.settings.tuning.settleSeconds;
     }
     if (!sleeps) continue;
     for (int b : group) {
-      WorldBody& body = bodies[b];
-      BodyState state = body.path.stateAt(T1);
-      state.velocity.setZero();
-      state.angularVelocity.setZero();
-      body.asleep = true;
-      body.contactFlight = false;
-      body.sleepGroup = group.front();
-      body.slowFor = 0;
-      body.setPath(freeFlight(body.rigid, state, T1, T1, Eigen::Vector3d::Zero()));
-      ++body.version;
-      ++step.frame.report.counters.settled;
+      putToSleep(step, b, bodies[b].path.stateAt(T1), T1);
+      bodies[b].sleepGroup = group.front();
     }
   }
   long sleeping = 0;

@@ -5,6 +5,24 @@
 
 namespace gjkx {
 
+bool isSlow(const StepContext& step, const WorldBody& body, const BodyState& state) {
+  const double g = step.scene.gravity.norm();
+  return g > 0 && body.rigid.kineticEnergy(state) * body.rigid.inverseMass() / g <
+                      step.band(step.settings.tuning.settleEnergy);
+}
+
+void putToSleep(StepContext& step, int b, BodyState state, double T1) {
+  WorldBody& body = step.bodies[b];
+  state.velocity.setZero();
+  state.angularVelocity.setZero();
+  body.asleep = true;
+  body.contactFlight = false;
+  body.slowFor = 0;
+  body.setPath(freeFlight(body.rigid, state, T1, T1, body.gravity(step.scene.gravity)));  // for no time: no spin to overflow
+  ++body.version;
+  ++step.frame.report.counters.settled;
+}
+
 void settle(StepContext& step, double T1) {
   std::vector<WorldBody>& bodies = step.bodies;
   const FrameState& frame = step.frame;
@@ -18,8 +36,7 @@ void settle(StepContext& step, double T1) {
     const WorldBody& body = bodies[b];
     if (body.rigid.isStatic() || body.asleep) continue;
     end[b] = body.path.stateAt(T1);
-    slow[b] = body.rigid.kineticEnergy(end[b]) * body.rigid.inverseMass() / g <
-              step.band(step.settings.tuning.settleEnergy);
+    slow[b] = isSlow(step, body, end[b]);
   }
   // How long each body has been slow and struck by nothing but resting or slow bodies;
   // one that has been so long enough, and was struck in this frame, may settle.
@@ -57,15 +74,7 @@ void settle(StepContext& step, double T1) {
   }
   for (std::size_t b = 0; b < n; ++b) {
     if (!settles[b]) continue;
-    WorldBody& body = bodies[b];
-    BodyState state = end[b];
-    state.velocity.setZero();
-    state.angularVelocity.setZero();
-    body.asleep = true;
-    body.slowFor = 0;
-    body.setPath(freeFlight(body.rigid, state, T1, T1, body.gravity(step.scene.gravity)));  // for no time: no spin to overflow
-    ++body.version;
-    ++step.frame.report.counters.settled;
+    putToSleep(step, int(b), end[b], T1);
   }
 }
 

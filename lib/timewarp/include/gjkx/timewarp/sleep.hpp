@@ -20,6 +20,14 @@
 
 namespace gjkx {
 
+/// True if `body` at `state` is slow (see the file comment): its kinetic energy could not lift
+/// its centre of mass by StepTuning::settleEnergy tolerances against gravity. False without gravity.
+bool isSlow(const StepContext& step, const WorldBody& body, const BodyState& state);
+
+/// Puts body b to sleep at T1 where `state` has it: velocity and spin zero, gravity off, its
+/// path flown for no time; counted in FrameCounters::settled.
+void putToSleep(StepContext& step, int b, BodyState state, double T1);
+
 /// Puts to sleep, at the frame's end T1, the bodies that have settled (see the file
 /// comment), and counts them (FrameCounters::settled). Without gravity, nothing settles.
 void settle(StepContext& step, double T1);
