@@ -21,6 +21,10 @@ packages=(
   libassimp-dev assimp-testmodels libbullet-extras-dev
   # the simulation (dynamics, timewarp): Boost.Odeint's Dormand-Prince, JSON scene files
   libboost-dev nlohmann-json3-dev
+  # the peers side by side on the simulation's scenes (docs 08): MuJoCo and ODE
+  libmujoco-dev libode-dev
+  # animations of a simulation or a query (animated WebP, shown inline by browsers)
+  libwebp-dev
 )
 
 missing=()
