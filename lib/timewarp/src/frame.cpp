@@ -86,6 +86,7 @@ const std::vector<FrameColumn>& frameColumns() {
       {"energy_rises", [](const FrameReport& r) { return double(r.counters.energyRises); }, true},
       {"sleeping", [](const FrameReport& r) { return double(r.counters.sleeping); }, true},
       {"contacts_s", [](const FrameReport& r) { return r.parts.contacts; }, false},
+      {"cpu_s", [](const FrameReport& r) { return r.cpuSeconds; }, false},
   };
   return columns;
 }

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <stdexcept>
 
@@ -89,6 +90,7 @@ Eigen::Vector3d World::positionOf(int body) const {
 FrameReport World::step() {
   if (done()) throw std::logic_error("World::step: the scene's duration is already simulated");
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpuStart = std::clock();
   const double T0 = double(frame_) / scene_.frameRate, T1 = double(frame_ + 1) / scene_.frameRate;
   const StepTuning& tuning = settings_.tuning;
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
@@ -197,6 +199,7 @@ FrameReport World::step() {
   }
   ++frame_;
   frame.report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  frame.report.cpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
   PartTimes& parts = frame.report.parts;
   parts.ordering = std::max(0.0, frame.report.wallSeconds - parts.integration - parts.bounds -
                                      parts.collisionDetection - parts.impulses - parts.checks - parts.contacts);

@@ -75,6 +75,9 @@ struct FrameReport {
   int frame = 0;              ///< 1, 2, ...
   double time = 0;            ///< simulated time at the frame's end
   double wallSeconds = 0;     ///< wall time spent on the frame
+  /// processor time the process spent on the frame (std::clock): unlike the wall time, it
+  /// does not count the time other programs of a shared machine held the processor
+  double cpuSeconds = 0;
   FrameStatus status = FrameStatus::Done;  ///< how it ended
   bool checked = false;       ///< the independent checks ran (else maxPenetration and tunnelled mean nothing)
   FrameCounters counters;     ///< what happened
