@@ -10,6 +10,7 @@
 // A curved shape is drawn from its support mapping alone: the hull of its support
 // points over many directions.
 #include "../chapter.hpp"
+#include "../shape_meshes.hpp"
 
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -26,27 +27,8 @@ using V = Vector3<double>;
 
 namespace {
 
-// n directions spread evenly over the unit sphere (a Fibonacci lattice).
-std::vector<V> sphereDirections(int n) {
-  std::vector<V> dirs;
-  const double golden = M_PI * (3 - std::sqrt(5.0));
-  for (int k = 0; k < n; ++k) {
-    const double z = 1 - 2 * (k + 0.5) / n, r = std::sqrt(1 - z * z);
-    dirs.emplace_back(r * std::cos(golden * k), r * std::sin(golden * k), z);
-  }
-  return dirs;
-}
-
-// The mesh of a solid convex shape, from nothing but its support mapping.
-template <typename X>
-Mesh meshFromSupport(const X& shape, int directions = 600) {
-  std::vector<V> points;
-  for (const V& s : sphereDirections(directions)) points.push_back(shape.support(s));
-  const auto hull = Polytope<double>::hull(points);
-  return Mesh{hull.vertices(), hull.triangles()};
-}
-
-Mesh meshOf(const Polytope<double>& polytope) { return Mesh{polytope.vertices(), polytope.triangles()}; }
+using chapter::meshFromSupport;
+using chapter::meshOf;
 
 // A small square of the supporting plane through x, normal to s.
 std::vector<Eigen::Vector3d> planePatch(const V& x, const V& s, double half) {

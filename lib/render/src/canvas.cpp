@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 
@@ -85,6 +86,7 @@ Canvas::Canvas(int width, int height, const Color& background) : impl_(std::make
 Canvas::~Canvas() = default;
 Canvas::Canvas(Canvas&& other) noexcept = default;
 Canvas& Canvas::operator=(Canvas&& other) noexcept = default;
+int Canvas::width() const { return impl_->width; }
 int Canvas::height() const { return impl_->height; }
 PixelRect Canvas::panel() const { return impl_->panel; }
 PixelRect Canvas::plotArea() const { return impl_->plot; }
@@ -202,6 +204,41 @@ void Canvas::text(const Eigen::Vector2d& p, const std::string& markup, const Tex
   impl_->queueLabel(impl_->toScreen(p), markup, style, anchor, offsetPx);
 }
 
+// The finished figure on `surface`: the pending 3D scene, the recording, then what goes on top.
+void Canvas::Impl::finish(cairo_surface_t* surface) {
+  flush3d();
+  cairo_t* target = cairo_create(surface);
+  cairo_set_source_surface(target, record, 0.0, 0.0);
+  cairo_paint(target);
+  for (const auto* list : {&overlays, &labels})
+    for (const auto& draw : *list) draw(target);
+  cairo_destroy(target);
+}
+
+std::vector<std::uint8_t> Canvas::rgba() {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, impl_->width, impl_->height);
+  impl_->finish(surface);
+  cairo_surface_flush(surface);
+  // Cairo's ARGB32 is premultiplied, one native-endian 32-bit word a pixel.
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  std::vector<std::uint8_t> out(std::size_t(impl_->width) * std::size_t(impl_->height) * 4);
+  for (int y = 0; y < impl_->height; ++y)
+    for (int x = 0; x < impl_->width; ++x) {
+      std::uint32_t word;
+      std::memcpy(&word, data + std::size_t(y) * std::size_t(stride) + 4 * std::size_t(x), 4);
+      const std::uint32_t a = word >> 24;
+      std::uint8_t* p = &out[(std::size_t(y) * std::size_t(impl_->width) + std::size_t(x)) * 4];
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t v = (word >> (16 - 8 * c)) & 0xFFu;
+        p[c] = std::uint8_t(a == 0 ? 0 : std::min<std::uint32_t>(255, (v * 255 + a / 2) / a));
+      }
+      p[3] = std::uint8_t(a);
+    }
+  cairo_surface_destroy(surface);
+  return out;
+}
+
 void Canvas::save(const std::string& path) {
   std::string extension = path.substr(std::min(path.size(), path.find_last_of('.') + 1));
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -213,14 +250,7 @@ void Canvas::save(const std::string& path) {
       : extension == "pdf" ? cairo_pdf_surface_create(path.c_str(), w, h)
                            : nullptr;
   if (!surface) throw std::invalid_argument("Canvas::save: " + path + " is not .png, .svg or .pdf");
-  // The finished figure: the pending 3D scene, the recording, then what goes on top.
-  impl_->flush3d();
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_surface(cr, impl_->record, 0.0, 0.0);
-  cairo_paint(cr);
-  for (const auto* list : {&impl_->overlays, &impl_->labels})
-    for (const auto& draw : *list) draw(cr);
-  cairo_destroy(cr);
+  impl_->finish(surface);
   const cairo_status_t written = extension == "png" ? cairo_surface_write_to_png(surface, path.c_str()) : CAIRO_STATUS_SUCCESS;
   cairo_surface_finish(surface);
   const cairo_status_t status = written != CAIRO_STATUS_SUCCESS ? written : cairo_surface_status(surface);

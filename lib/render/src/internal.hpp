@@ -54,6 +54,7 @@ struct Canvas::Impl {
     cairo_surface_destroy(record);
   }
   void flush3d();  // renders the pending scene into the clip rectangle (scene.cpp)
+  void finish(cairo_surface_t* surface);  // the finished figure: the recording, then overlays and labels
   void queueLabel(const Eigen::Vector2d& at, const std::string& markup, const TextStyle& style, Anchor anchor,
                   const Eigen::Vector2d& offsetPx);
   void require3d(const char* what) const {  // every 3D call needs the panel's camera

@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,6 +80,8 @@ class Canvas {
   ~Canvas();                                   ///< Frees the Cairo surfaces.
   Canvas(Canvas&& other) noexcept;             ///< Takes over @p other's drawing.
   Canvas& operator=(Canvas&& other) noexcept;  ///< Takes over @p other's drawing.
+  /// Width of the figure in pixels.
+  int width() const;
   /// Height of the figure in pixels.
   int height() const;
 
@@ -160,6 +163,10 @@ class Canvas {
   /// extension (std::invalid_argument for another; std::runtime_error if it cannot write);
   /// drawing may go on afterwards. The same figure gives the same bytes of PNG.
   void save(const std::string& path);
+  /// The finished figure as save() would write it, as pixels: width() x height() of them,
+  /// row by row from the top, 4 bytes each (red, green, blue, alpha; not premultiplied),
+  /// e.g. a frame of an animation. Drawing may go on afterwards.
+  std::vector<std::uint8_t> rgba();
 
   struct Impl;  ///< Cairo's surfaces, the panel, the pending 3D scene, the labels.
 
