@@ -19,6 +19,7 @@
 // scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
 // of the paper's statistics for the runs (run_stats.hpp).
 #include "../chapter.hpp"
+#include "close_up.hpp"
 #include "run_stats.hpp"
 #include "torso_model.hpp"
 
@@ -358,7 +359,7 @@ int main(int argc, char** argv) {
       // Framed on the plant and the falling torso: the crash is what the figure shows, and
       // bones thrown far across the floor would shrink it to a speck.
       const auto box = bounds(layout, {panels[0], panels[1]});
-      Canvas canvas(4 * W, H);
+      Canvas canvas(4 * W, H + torso::closeUpHeight);  // the bones close up below (close_up.hpp)
       for (int p = 0; p < 4; ++p) {
         canvas.setPanel({p * W, 0, W, H});
         char title[80];
@@ -366,6 +367,7 @@ int main(int argc, char** argv) {
         canvas.title(title);
         drawScene(canvas, layout, panels[p], box);
       }
+      torso::closeUpRow(canvas, layout, std::vector<Frame>(panels, panels + 4), std::vector<const char*>(names, names + 4), W, H, drawScene);
       chapter::save(canvas, out, "fig05-torso-crash");
     }
     if (std::filesystem::exists(run + "/frames.csv"))
