@@ -8,7 +8,8 @@
 //   support-mapping-hill-climbing.png: hill climbing on a polytope of 300 vertices,
 //                                      from a cold start and from a warm-start hint.
 // A curved shape is drawn from its support mapping alone: the hull of its support
-// points over many directions.
+// points over many directions. --direction and --vertices change the hill climb's query,
+// and --trace prints the climbs vertex by vertex (docs/traces.md).
 #include "../chapter.hpp"
 #include "../shape_meshes.hpp"
 
@@ -18,8 +19,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <string>
+#include <vector>
 
 using namespace gjkx;
 using namespace gjkx::render;
@@ -129,17 +132,40 @@ void drawClimb(Canvas& canvas, const Polytope<double>& X, const V& s, int hint, 
                Anchor::Right);
 }
 
-void hillClimbingFigure(const std::string& out) {
+// The climb from `hint` to S_X(s) as a table (--trace): per step the vertex, s.x there, the
+// dot products s.x_n of its neighbours, and the step taken (to the best neighbour while it
+// is strictly better along s, as Polytope::support climbs).
+void printClimb(const std::string& title, const Polytope<double>& X, const V& s, int hint) {
+  chapter::TraceTable table{title, {"step", "vertex", "s.x", "neighbours n: s.x_n", "step taken"}, {}};
+  const std::vector<int> path = X.climbPath(s, hint);
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const int v = path[k];
+    std::string neighbours;
+    for (int n : X.neighbours(v)) neighbours += (neighbours.empty() ? "" : " ") + std::to_string(n) + ": " + chapter::fixed(s.dot(X.vertex(n)), 4);
+    table.rows.push_back({std::to_string(k), std::to_string(v), chapter::fixed(s.dot(X.vertex(v)), 4), neighbours,
+                          k + 1 < path.size() ? "to " + std::to_string(path[k + 1])
+                                              : "stop: no neighbour higher, S_X(s) = vertex " + std::to_string(v)});
+  }
+  table.print();
+}
+
+void hillClimbingFigure(const std::string& out, const V& direction, int vertices, bool trace) {
   std::mt19937 rng(3);
   std::normal_distribution<double> gauss;
   std::vector<V> points;
-  for (int k = 0; k < 300; ++k) points.push_back(V(gauss(rng), gauss(rng), gauss(rng)).normalized());
+  for (int k = 0; k < vertices; ++k) points.push_back(V(gauss(rng), gauss(rng), gauss(rng)).normalized());
   const auto X = Polytope<double>::hull(points);
-  const V s = V(0.3, -0.2, 1).normalized();
+  const V s = direction.normalized();
   const V previous = Eigen::AngleAxisd(0.45, V::UnitX()) * s;  // last query's direction, about 26 degrees away
   SupportHint warm = X.supportIndexLinearScan(-s);               // a cold start: the vertex opposite the answer
   const int cold = warm;
   X.support(previous, warm);                                     // a warm start: the answer to the last query
+  if (trace) {
+    printClimb("support-mapping-hill-climbing: cold start (§2.1, s = " + chapter::fixed(s.x(), 4) + ", " +
+                   chapter::fixed(s.y(), 4) + ", " + chapter::fixed(s.z(), 4) + ")",
+               X, s, cold);
+    printClimb("support-mapping-hill-climbing: warm start from the last answer", X, s, warm);
+  }
 
   const int W = 480, H = 440;
   Canvas canvas(2 * W, H);
@@ -155,8 +181,24 @@ void hillClimbingFigure(const std::string& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".", direction = "0.3,-0.2,1";
+  int vertices = 300;
+  bool trace = false;
+  CLI::App app{"Draws chapter 01's figures in DIR: support mappings and hill climbing. --direction and --vertices "
+               "change the hill climb's query; --trace prints the climbs (docs/traces.md)."};
+  chapter::addFigureOptions(app, out);
+  chapter::addTraceOption(app, trace);
+  app.add_option("--direction", direction, "s, the direction of the hill climb")
+      ->check(chapter::numbers(3, 3, "X,Y,Z"))
+      ->capture_default_str();
+  app.add_option("--vertices", vertices, "the points on the unit sphere the polytope is the hull of")
+      ->check(CLI::Range(4, 100000))
+      ->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
+  const std::vector<double> s = chapter::numberList(direction);
+  if (s[0] == 0 && s[1] == 0 && s[2] == 0) chapter::badOption(app, "--direction", "s must be nonzero");
+  std::filesystem::create_directories(out);
   shapesFigure(out);
-  hillClimbingFigure(out);
+  hillClimbingFigure(out, V(s[0], s[1], s[2]), vertices, trace);
   return 0;
 }
