@@ -11,15 +11,21 @@
 //          w_i = S_Q(-s_i) - S_P(s_i), the simplex kept (thick) and its closest point z.
 // Each left panel's title says whether s_i is a separating vector (SD > 0, §2.3): here
 // s_1 to s_5 are, s_0 is not.
-// The run is the one tests/gjk/test_gjk_figure2_steps.cpp replays by hand.
+// The run is the one tests/gjk/test_gjk_figure2_steps.cpp replays by hand. Options change
+// the query (the shapes, their poses, s_0), and --trace prints the run as a table
+// (docs/traces.md).
 #include "../chapter.hpp"
 
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/support_mapping/polytope.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 using namespace gjkx;
 using namespace gjkx::render;
@@ -33,6 +39,13 @@ constexpr TextStyle haloLabel{Font::Math, style::labelSize, palette::ink, kHalo,
 
 using chapter::fixed;
 
+// The world windows of the two panels: the bodies (left) and V_Q - V_P near the origin (right).
+struct Windows {
+  double x0 = -1, x1 = 15, y0 = -3.4, y1 = 10.5;  // the bodies
+  double mx0 = -1.5, mx1 = 10, my0 = -4, my1 = 10;  // the part of V_Q - V_P near the origin
+  Eigen::Vector2d qLabel{13.6, 7.2};                // where Q's name goes
+};
+
 // A long line through `through`, normal to s: the supporting line (plane) of §2.3.
 void supportingLine(Canvas& canvas, const V& through, const V& s, const Stroke& stroke) {
   const Eigen::Vector2d n = xy(s).normalized();
@@ -41,8 +54,9 @@ void supportingLine(Canvas& canvas, const V& through, const V& s, const Stroke& 
 }
 
 // Left panel of iteration i: P and Q in the world, and the sets V_P and V_Q.
-void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double>& Q, const GjkIteration<double>& it) {
-  canvas.setWorldWindow(-1, 15, -3.4, 10.5);
+void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double>& Q, const GjkIteration<double>& it,
+                const Windows& w) {
+  canvas.setWorldWindow(w.x0, w.x1, w.y0, w.y1);
   canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
   // §2.3: "If this distance is positive, then s_i is called a separating vector".
   canvas.title("i = " + std::to_string(it.i) + ":  V_P and V_Q,  s_" + std::to_string(it.i) +
@@ -50,7 +64,7 @@ void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double
   canvas.polygon(xy(P.vertices()), style::bodyP);
   canvas.polygon(xy(Q.vertices()), style::bodyQ);
   canvas.text(xy(P.center()), "P", TextStyle{Font::Math, 22, palette::bodyPStroke});
-  canvas.text({13.6, 7.2}, "Q", TextStyle{Font::Math, 22, palette::bodyQStroke});
+  canvas.text(w.qLabel, "Q", TextStyle{Font::Math, 22, palette::bodyQStroke});
   // The supporting lines of P and Q normal to s_i, through S_P(s_i) and S_Q(-s_i).
   supportingLine(canvas, it.supportP, it.s, Stroke{palette::bodyPStroke, 1.2, style::dashed});
   supportingLine(canvas, it.supportQ, it.s, Stroke{palette::bodyQStroke, 1.2, style::dashed});
@@ -89,8 +103,9 @@ void drawBodies(Canvas& canvas, const Polytope<double>& P, const Polytope<double
 }
 
 // Right panel of iteration i: V_Q - V_P, s_i, w_i, the simplex kept and z.
-void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIteration<double>& it) {
-  canvas.setWorldWindow(-1.5, 10, -4, 10);  // the part of V_Q - V_P near the origin
+void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIteration<double>& it,
+                   const Windows& window) {
+  canvas.setWorldWindow(window.mx0, window.mx1, window.my0, window.my1);  // the part of V_Q - V_P near the origin
   canvas.setClip(canvas.plotArea());        // long lines stop at the plot area
   const char* verdict = it.supportingDistance > 0 ? " > 0" : " < 0";
   canvas.title("V_Q - V_P:  SD = " + fixed(it.supportingDistance) + verdict + ",  MD = " + fixed(it.minkowskiDistance));
@@ -125,16 +140,121 @@ void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIte
   }
 }
 
+// How iteration i ended, as the trace's last column names it.
+const char* stepName(GjkStep step) {
+  switch (step) {
+    case GjkStep::Continue: return "continue";
+    case GjkStep::Converged: return "converged";
+    case GjkStep::Overlap: return "overlap";
+    case GjkStep::SeparatingVector: return "separating-vector";
+  }
+  return "?";
+}
+
+// The run as a table (--trace): per iteration i, s_i, S_P(s_i), S_Q(-s_i), the supporting
+// distance SD (§2.3), the kept simplex as V_P and V_Q, z and the Minkowski distance MD = |z|.
+void printTrace(const GjkTrace<double>& trace, const GjkResult<double>& result) {
+  using chapter::pointCell;
+  chapter::TraceTable table{"fig02-gjk-2d: GJK iteration by iteration (§2.2, Fig. 2)",
+                            {"i", "s_i", "S_P(s_i)", "S_Q(-s_i)", "SD", "V_P", "V_Q", "z", "MD", "step"}, {}};
+  for (const auto& it : trace.iterations) {
+    std::string vp, vq;
+    for (int k = 0; k < it.simplex.size; ++k) {
+      vp += (k ? " " : "") + pointCell(it.simplex.vertices[k].p);
+      vq += (k ? " " : "") + pointCell(it.simplex.vertices[k].q);
+    }
+    table.rows.push_back({std::to_string(it.i), pointCell(it.s), pointCell(it.supportP), pointCell(it.supportQ),
+                          fixed(it.supportingDistance, 6), vp, vq, pointCell(it.z), fixed(it.minkowskiDistance, 6),
+                          stepName(it.step)});
+  }
+  table.print();
+  std::printf("result: %s after %d iterations, distance %.6f\n\n", toString(result.status), result.iterations,
+              result.distance);
+}
+
+// The windows of a reader's query: each panel's points and the origin, with a margin.
+Windows windowsOf(const Polytope<double>& P, const Polytope<double>& Q, const Polytope<double>& QminusP) {
+  auto bounds = [](std::vector<V> points, double& x0, double& x1, double& y0, double& y1) {
+    points.push_back(V::Zero());
+    V lo = points[0], hi = points[0];
+    for (const V& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const double margin = 0.15 * std::max(hi.x() - lo.x(), hi.y() - lo.y()) + 0.5;
+    x0 = lo.x() - margin, x1 = hi.x() + margin, y0 = lo.y() - margin, y1 = hi.y() + margin;
+  };
+  Windows w;
+  std::vector<V> both = P.vertices();
+  both.insert(both.end(), Q.vertices().begin(), Q.vertices().end());
+  bounds(both, w.x0, w.x1, w.y0, w.y1);
+  bounds(QminusP.vertices(), w.mx0, w.mx1, w.my0, w.my1);
+  w.qLabel = xy(Q.center());
+  return w;
+}
+
+// A shape of the plane z = 0 from its option's text, placed at `pose`: "box:W,H" (centred on
+// its origin), "ngon:R,N" (N corners on a circle of radius R) or "polygon:X1,Y1,X2,Y2,..."
+// (the hull of the points); a bad text ends the program naming `option`.
+Polytope<double> shapeOf(const CLI::App& app, const std::string& option, const std::string& text,
+                         const Pose<double>& pose) {
+  const std::size_t colon = text.find(':');
+  const std::string kind = text.substr(0, colon);
+  const std::vector<double> n = colon == std::string::npos ? std::vector<double>{} : chapter::numberList(text.substr(colon + 1));
+  std::vector<V> corners;
+  if (kind == "box" && n.size() == 2 && n[0] > 0 && n[1] > 0) {
+    corners = {V(-n[0] / 2, -n[1] / 2, 0), V(n[0] / 2, -n[1] / 2, 0), V(n[0] / 2, n[1] / 2, 0), V(-n[0] / 2, n[1] / 2, 0)};
+  } else if (kind == "ngon" && n.size() == 2 && n[0] > 0 && n[1] >= 3 && n[1] <= 360 && n[1] == std::floor(n[1])) {
+    for (int k = 0; k < int(n[1]); ++k)
+      corners.push_back(V(n[0] * std::cos(2 * M_PI * k / n[1]), n[0] * std::sin(2 * M_PI * k / n[1]), 0));
+  } else if (kind == "polygon" && n.size() >= 6 && n.size() % 2 == 0) {
+    for (std::size_t k = 0; k < n.size(); k += 2) corners.push_back(V(n[k], n[k + 1], 0));
+  } else {
+    chapter::badOption(app, option,
+                       "expected box:W,H or ngon:R,N or polygon:X1,Y1,X2,Y2,X3,Y3,... (positive sizes, 3 to 360 "
+                       "corners), got '" + text + "'");
+  }
+  for (V& c : corners) c = pose(c);
+  try {
+    return Polytope<double>::polygon(corners);
+  } catch (const std::exception& e) {
+    chapter::badOption(app, option, e.what());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".", pText, qText, pAt = "0,0", qAt = "0,0", s0Text = "0,-1";
+  bool printing = false;
+  CLI::App app{"Draws Fig. 2 of the paper in DIR: GJK iteration by iteration. --p, --q, --p-at, --q-at and --s0 "
+               "change the query; --trace prints the run (docs/traces.md)."};
+  chapter::addFigureOptions(app, out);
+  chapter::addTraceOption(app, printing);
+  auto* pOption = app.add_option("--p", pText, "the shape P: box:W,H, ngon:R,N or polygon:X1,Y1,X2,Y2,... "
+                                               "(default: Fig. 2's quadrilateral)");
+  auto* qOption = app.add_option("--q", qText, "the shape Q, as --p (default: Fig. 2's pentagon)");
+  auto* pAtOption = app.add_option("--p-at", pAt, "P's pose: where its origin goes, and its angle (radians)")
+                        ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
+                        ->capture_default_str();
+  auto* qAtOption = app.add_option("--q-at", qAt, "Q's pose, as --p-at")
+                        ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
+                        ->capture_default_str();
+  auto* s0Option = app.add_option("--s0", s0Text, "s_0, GJK's first search direction (§2.2: \"an arbitrary nonzero "
+                                                  "vector\")")
+                       ->check(chapter::numbers(2, 2, "X,Y"))
+                       ->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
+  const std::vector<double> s0 = chapter::numberList(s0Text);
+  if (s0[0] == 0 && s0[1] == 0) chapter::badOption(app, "--s0", "s_0 must be nonzero");
+  std::filesystem::create_directories(out);
+  const bool query = pOption->count() + qOption->count() + pAtOption->count() + qAtOption->count() + s0Option->count() > 0;
 
-  // The scene of Fig. 2 (and of the step-by-step test).
-  const auto P = Polytope<double>::polygon({V(0, 0, 0), V(5, 0, 0), V(6, 6, 0), V(0, 5, 0)});
-  const auto Q = Polytope<double>::polygon({V(11, 3, 0), V(12, 3, 0), V(14, 5, 0), V(9, 9, 0), V(10, 5, 0)});
+  // The scene of Fig. 2 (and of the step-by-step test), or the reader's.
+  const Pose<double> poseP = chapter::planarPose(chapter::numberList(pAt)), poseQ = chapter::planarPose(chapter::numberList(qAt));
+  const auto P = pOption->count() ? shapeOf(app, "--p", pText, poseP)
+                                  : shapeOf(app, "--p", "polygon:0,0,5,0,6,6,0,5", poseP);
+  const auto Q = qOption->count() ? shapeOf(app, "--q", qText, poseQ)
+                                  : shapeOf(app, "--q", "polygon:11,3,12,3,14,5,9,9,10,5", poseQ);
   GjkSettings<double> settings;
-  settings.initialDirection = V(0, -1, 0);  // s_0: "an arbitrary nonzero vector"
+  settings.initialDirection = V(s0[0], s0[1], 0);  // s_0: "an arbitrary nonzero vector"
   GjkTrace<double> trace;
   const GjkResult<double> result = gjk(P, Q, settings, nullptr, trace);
 
@@ -143,6 +263,8 @@ int main(int argc, char** argv) {
   for (const V& q : Q.vertices())
     for (const V& p : P.vertices()) differences.push_back(q - p);
   const auto QminusP = Polytope<double>::polygon(differences);
+  const Windows windows = query ? windowsOf(P, Q, QminusP) : Windows{};
+  if (printing) printTrace(trace, result);
 
   // Two iterations per row, each a pair of panels.
   const int panelW = 360, panelH = 320, perRow = 2;
@@ -152,12 +274,15 @@ int main(int argc, char** argv) {
   for (int i = 0; i < count; ++i) {
     const int x = (i % perRow) * 2 * panelW, y = (i / perRow) * panelH;
     canvas.setPanel({x, y, panelW, panelH});
-    drawBodies(canvas, P, Q, trace.iterations[i]);
+    drawBodies(canvas, P, Q, trace.iterations[i], windows);
     canvas.setPanel({x + panelW, y, panelW, panelH});
-    drawMinkowski(canvas, QminusP, trace.iterations[i]);
+    drawMinkowski(canvas, QminusP, trace.iterations[i], windows);
   }
   chapter::save(canvas, out, "fig02-gjk-2d");
-  std::printf("GJK: %s after %d iterations, distance %.6f (15/sqrt(17) = %.6f)\n", toString(result.status),
-              result.iterations, result.distance, 15 / std::sqrt(17.0));
+  if (query)
+    std::printf("GJK: %s after %d iterations, distance %.6f\n", toString(result.status), result.iterations, result.distance);
+  else
+    std::printf("GJK: %s after %d iterations, distance %.6f (15/sqrt(17) = %.6f)\n", toString(result.status),
+                result.iterations, result.distance, 15 / std::sqrt(17.0));
   return 0;
 }
