@@ -9,6 +9,8 @@
 //   (e) the maximum when they intersect: minus the penetration depth (§4, "a negative
 //       value is the penetration distance when they intersect");
 //   (f) SD over the angle for the intersecting pair: it never reaches zero.
+// Options move Q and turn s_a and s_b; --trace prints the directions drawn and their SD
+// (docs/traces.md).
 #include "../chapter.hpp"
 
 #include <gjkx/render/canvas.hpp>
@@ -19,8 +21,11 @@
 
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 using namespace gjkx;
 using namespace gjkx::render;
@@ -141,21 +146,58 @@ MaximumSupportingDistance<double> maximum(const Body& P, const Body& Q) {
 
 double angleOf(const V& s) { return std::fmod(std::atan2(s.y(), s.x()) + 2 * M_PI, 2 * M_PI); }
 
+// The directions the figure draws as a table (--trace): per direction, S_P(s), S_Q(-s) and
+// SD(P, Q, s) = s.S_Q(-s) - s.S_P(s) (§2.3), positive when s is a separating vector.
+void printDirections(const std::vector<std::tuple<std::string, const Body*, const Body*, V>>& rows) {
+  using chapter::pointCell;
+  chapter::TraceTable table{"fig03-supporting-distance: the directions drawn (§2.3, §4)",
+                            {"panel", "s (unit)", "angle", "S_P(s)", "S_Q(-s)", "SD", "s separates"}, {}};
+  for (const auto& [panel, P, Q, direction] : rows) {
+    const V unit = direction.normalized();
+    const double sd = supportingDistance(*P, *Q, unit);
+    table.rows.push_back({panel, pointCell(unit, 4), fixed(angleOf(unit), 4), pointCell(V(P->support(unit))),
+                          pointCell(V(Q->support(-unit))), fixed(sd, 6), sd > 0 ? "yes" : "no"});
+  }
+  table.print();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".", apartText = "6.5,0.5,0.3", insideText = "3.2,0.8,0.3";
+  double separatingAngle = 0.75, otherAngle = 1.9;
+  bool trace = false;
+  CLI::App app{"Draws Fig. 3 of the paper in DIR: the supporting distance and its maximum. The options move Q and "
+               "turn s_a and s_b; --trace prints the directions drawn (docs/traces.md)."};
+  chapter::addFigureOptions(app, out);
+  chapter::addTraceOption(app, trace);
+  app.add_option("--q-apart", apartText, "Q's pose in panels (a)-(d): where its origin goes, its angle (radians)")
+      ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
+      ->capture_default_str();
+  app.add_option("--q-inside", insideText, "Q's pose in panels (e)-(f), as --q-apart")
+      ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
+      ->capture_default_str();
+  app.add_option("--angle-a", separatingAngle, "the angle of s_a (radians)")
+      ->check(CLI::Range(-100.0, 100.0))
+      ->capture_default_str();
+  app.add_option("--angle-b", otherAngle, "the angle of s_b (radians)")->check(CLI::Range(-100.0, 100.0))->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
+  std::filesystem::create_directories(out);
 
   const auto pentagon = Polytope<double>::polygon({V(0, 0, 0), V(3, -0.5, 0), V(4, 2, 0), V(2, 4, 0), V(-0.5, 2.5, 0)});
   const auto quad = Polytope<double>::polygon({V(0, 0, 0), V(2.5, 0.5, 0), V(2, 3, 0), V(-0.5, 2, 0)});
   const Body P = place(pentagon, Pose<double>::identity());
-  const Body Qapart = place(quad, Pose<double>::fromAxisAngle(V::UnitZ(), 0.3, V(6.5, 0.5, 0)));
-  const Body Qinside = place(quad, Pose<double>::fromAxisAngle(V::UnitZ(), 0.3, V(3.2, 0.8, 0)));
+  const Body Qapart = place(quad, chapter::planarPose(chapter::numberList(apartText)));
+  const Body Qinside = place(quad, chapter::planarPose(chapter::numberList(insideText)));
 
-  const double separatingAngle = 0.75, otherAngle = 1.9;
   const auto bestApart = maximum(P, Qapart);
   const auto bestInside = maximum(P, Qinside);
   const auto distance = gjk(P, Qapart);
+  if (trace)
+    printDirections({{"(a) s_a", &P, &Qapart, direction(separatingAngle)},
+                     {"(b) s_b", &P, &Qapart, direction(otherAngle)},
+                     {"(d) max, disjoint", &P, &Qapart, bestApart.direction},
+                     {"(e) max, intersecting", &P, &Qinside, bestInside.direction}});
 
   const int W = 440, H = 380;
   Canvas canvas(3 * W, 2 * H);
@@ -163,13 +205,18 @@ int main(int argc, char** argv) {
     canvas.setPanel({col * W, row * H, W, H});
     canvas.title(title);
   };
-  panel(0, 0, "(a) s_a separates: SD > 0");
+  // The titles say what the directions do (for the figure's query: s_a separates, s_b does not).
+  auto verdict = [&](double angle, const std::string& name) {
+    const double sd = supportingDistance(P, Qapart, direction(angle));
+    return sd > 0 ? name + " separates: SD > 0" : name + " does not separate: SD " + (sd < 0 ? "< 0" : "= 0");
+  };
+  panel(0, 0, "(a) " + verdict(separatingAngle, "s_a"));
   canvas.setWorldWindow(-2, 11, -3, 6);
   canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
   drawBodies(canvas, P, Qapart);
   drawSupportingDistance(canvas, P, Qapart, direction(separatingAngle), "s_a");
 
-  panel(1, 0, "(b) s_b does not separate: SD < 0");
+  panel(1, 0, "(b) " + verdict(otherAngle, "s_b"));
   canvas.setWorldWindow(-2, 11, -3, 6);
   canvas.setClip(canvas.plotArea());  // long lines stop at the plot area
   drawBodies(canvas, P, Qapart);
