@@ -8,6 +8,8 @@
 //                        is an octagon: slabs x, y, x+y, x-y) on three motions;
 //   kdop-front.png:      the front of the test tree of two Wusons at two successive
 //                        frames, as blocks of the piece-pair matrix.
+// --frames and --spin change the front's query; --trace prints the query frame by frame
+// and the front of the two frames drawn node by node (docs/traces.md).
 #include "../chapter.hpp"
 #include "meshes.hpp"
 
@@ -17,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -258,7 +261,52 @@ void extrusionFigure(const std::string& out) {
 
 // The front as blocks of the piece-pair matrix: a BVTT node (a, b) covers A's pieces under
 // a times B's pieces under b.
-void frontFigure(const std::string& out, const Subject& s) {
+// A front as a map from its BVTT nodes (a, b) to their verdicts (true: proven apart).
+std::map<std::pair<int, int>, bool> keyset(const std::vector<BodyPairQuery<double>::FrontNode>& front) {
+  std::map<std::pair<int, int>, bool> k;
+  for (const auto& n : front) k[{n.a, n.b}] = n.disjoint;
+  return k;
+}
+
+// The front's query as tables (--trace): per frame the BVTT nodes tested (pairs of 14-DOPs put
+// to the k-DOP extrusion test), the nodes the front climbed back to, the front's size, the
+// piece pairs kept (their 14-DOPs overlap over the frame) and the front's update (nodes new
+// to it or whose verdict changed); then the fronts of the two frames drawn, node by node.
+void printFront(const std::vector<std::vector<BodyPairQuery<double>::FrontNode>>& fronts,
+                const std::vector<BodyPairCounters>& counters, int frames, int best) {
+  chapter::TraceTable table{"kdop-front: the body-pair query frame by frame (§6, frontal tracking)",
+                            {"frame", "t_0", "t_1", "nodes tested", "climbs", "front", "pairs kept", "front nodes new",
+                             "left the front"},
+                            {}};
+  for (int f = 0; f < frames; ++f) {
+    const auto now = keyset(fronts[std::size_t(f)]);
+    int fresh = 0, gone = 0;
+    if (f > 0) {
+      const auto before = keyset(fronts[std::size_t(f - 1)]);
+      for (const auto& [k, v] : now) fresh += before.count(k) == 0 || before.at(k) != v;
+      for (const auto& [k, v] : before) gone += now.count(k) == 0;
+    }
+    const BodyPairCounters& c = counters[std::size_t(f)];
+    table.rows.push_back({std::to_string(f), chapter::format("%.4f", f / double(frames)),
+                          chapter::format("%.4f", (f + 1) / double(frames)), std::to_string(c.nodesVisited),
+                          std::to_string(c.climbs), std::to_string(c.frontSize), std::to_string(c.pairsKept),
+                          f > 0 ? std::to_string(fresh) : "-", f > 0 ? std::to_string(gone) : "-"});
+  }
+  table.print();
+  for (int f : {best - 1, best}) {
+    const auto before = keyset(fronts[std::size_t(f == 0 ? 0 : f - 1)]);
+    chapter::TraceTable nodes{"kdop-front: the front after frame " + std::to_string(f) +
+                                  " (BVTT node (a, b): A's node a against B's node b)",
+                              {"a", "b", "verdict", "slab that proved it apart", "new"}, {}};
+    for (const auto& n : fronts[std::size_t(f)])
+      nodes.rows.push_back({std::to_string(n.a), std::to_string(n.b), n.disjoint ? "apart" : "pair kept",
+                            n.slab >= 0 ? std::to_string(n.slab) : "-",
+                            f > 0 && (before.count({n.a, n.b}) == 0 || before.at({n.a, n.b}) != n.disjoint) ? "yes" : "no"});
+    nodes.print();
+  }
+}
+
+void frontFigure(const std::string& out, const Subject& s, int frames, double spin, bool trace) {
   const Bvh<double> bvh(s.pieces.polytopes<double>());
   // Each node's range of leaves in depth-first order.
   std::vector<std::pair<int, int>> range(bvh.nodes().size());
@@ -278,23 +326,17 @@ void frontFigure(const std::string& out, const Subject& s) {
   const int leaves = next;
   double size = 0;
   for (const auto& n : bvh.nodes()) size = std::max(size, n.hull.boundingRadius());
-  const Motion<double> ma = Motion<double>::screw(Pose<double>::identity(), {0, 0, 0}, {0, 0, 0.6});
+  const Motion<double> ma = Motion<double>::screw(Pose<double>::identity(), {0, 0, 0}, {0, 0, spin});
   const Motion<double> mb = Motion<double>::screw(Pose<double>::translate({-1.2 * size, 0.3 * size, 0}), {1.2 * size, 0, 0},
                                                   {0.3, 0.5, 0});
   BodyPairQuery<double> query(bvh, bvh);
-  // Run 400 frames and keep the two successive frames whose fronts differ most.
-  const int frames = 400;
+  // Run the frames (400) and keep the two successive frames whose fronts differ most.
   std::vector<std::vector<BodyPairQuery<double>::FrontNode>> fronts;
   std::vector<BodyPairCounters> counters;
   for (int f = 0; f < frames; ++f) {
     counters.push_back(query.query(ma, mb, f / double(frames), (f + 1) / double(frames)).counters);
     fronts.push_back(query.front());
   }
-  auto keyset = [](const std::vector<BodyPairQuery<double>::FrontNode>& front) {
-    std::map<std::pair<int, int>, bool> k;
-    for (const auto& n : front) k[{n.a, n.b}] = n.disjoint;
-    return k;
-  };
   int best = 1, bestChange = -1;
   for (int f = 1; f < frames; ++f) {
     const auto x = keyset(fronts[f - 1]), y = keyset(fronts[f]);
@@ -305,6 +347,7 @@ void frontFigure(const std::string& out, const Subject& s) {
       best = f;
     }
   }
+  if (trace) printFront(fronts, counters, frames, best);
   const int W = 560, H = 600;
   Canvas canvas(2 * W, H);
   for (int panel = 0; panel < 2; ++panel) {
@@ -336,7 +379,22 @@ void frontFigure(const std::string& out, const Subject& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".";
+  int frames = 400;
+  double spin = 0.6;
+  bool trace = false;
+  CLI::App app{"Draws chapter 06's figures in DIR: convex pieces, their 14-DOP hierarchy, the k-DOP extrusion test "
+               "and the front. --frames and --spin change the front's query; --trace prints it (docs/traces.md)."};
+  chapter::addFigureOptions(app, out);
+  chapter::addTraceOption(app, trace);
+  app.add_option("--frames", frames, "the frames over [0, 1] of the front's query (two Wusons)")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  app.add_option("--spin", spin, "A's turn about z over [0, 1] (radians)")
+      ->check(CLI::Range(-1000.0, 1000.0))
+      ->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
+  std::filesystem::create_directories(out);
   std::vector<Subject> subjects;
   for (auto& [name, mesh] : chapter::chapterMeshes()) {
     if (name == "spider") continue;
@@ -349,6 +407,6 @@ int main(int argc, char** argv) {
   piecesFigure(out, subjects);
   hierarchyFigure(out, subjects.front());
   extrusionFigure(out);
-  frontFigure(out, subjects.front());
+  frontFigure(out, subjects.front(), frames, spin, trace);
   return 0;
 }
