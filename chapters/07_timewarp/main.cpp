@@ -15,8 +15,11 @@
 //       the time-of-impact heap, fixed steps with static tests), each with its counts of
 //       pair checks, collisions, rollbacks and body flights discarded.
 // Nothing in a figure depends on the wall clock: the trace and the counters are exact
-// functions of the scene.
+// functions of the scene. --scene draws any gjkx_simulate scene instead of the cradle and
+// --frames sets the frames drawn; --trace prints the Timewarp run event by event
+// (docs/traces.md).
 #include "../chapter.hpp"
+#include "runs.hpp"
 
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -25,65 +28,25 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
 using namespace gjkx;
 using namespace gjkx::render;
 using P2 = Eigen::Vector2d;
+using namespace timewarp_figures;
 
 namespace {
 
-constexpr int kFrames = 3;        // frames drawn
-constexpr double kFrameRate = 24;  // the paper's frames
 const Color kFlight = Color::hex(0x1F5FA8);     // a flight from the frame's start
 const Color kReflown = Color::hex(0xD9730D);    // a flight re-flown from a collision
 const Color kDiscarded = Color::hex(0x9A9A9A);  // a path a rollback (or a cut) discarded
 const Color kCollision = palette::penetration;  // a collision
 const TextStyle kSmall{Font::Sans, 13, palette::ink, 2.0};
 const TextStyle kSmallGrey{Font::Sans, 12, Color::hex(0x5A5A5A), 2.0};
-
-std::string format(const char* spec, double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, spec, x);
-  return buffer;
-}
-
-// The cradle: ball1 at 1 m/s towards four balls at rest 2 cm apart, no gravity, e = 1, no
-// friction. It hits ball2 at t = 0.03 s, and the momentum runs down the row every 0.02 s:
-// two collisions in the second frame, one in each of the others.
-Scene cradle(Ordering ordering) {
-  std::string bodies;
-  for (int k = 0; k < 5; ++k)
-    bodies += std::string(k ? "," : "") + R"({ "name": "ball)" + std::to_string(k + 1) +
-              R"(", "shape": {"sphere": 0.1}, "position": [)" + format("%.2f", k == 0 ? -0.01 : 0.22 * k) +
-              R"(, 0, 0], "velocity": [)" + (k == 0 ? "1" : "0") + ", 0, 0] }";
-  return parseScene(R"({ "gravity": [0, 0, 0], "frame_rate": 24, "duration": )" + format("%.6f", kFrames / kFrameRate) +
-                        R"(, "restitution": 1, "friction": 0, "scalar": "double", "contact": "microcollisions", "ordering": ")" +
-                        orderingName(ordering) + R"(", "bodies": [)" + bodies + "] }",
-                    "cradle");
-}
-
-// One run of the cradle: its trace and its counters summed over the frames.
-struct Run {
-  Ordering ordering;
-  std::vector<std::string> names;
-  std::vector<TraceEvent> trace;
-  FrameCounters total;
-};
-
-Run run(Ordering ordering) {
-  WorldSettings settings;
-  settings.trace = true;
-  World world(cradle(ordering), settings);
-  Run r{ordering, {}, {}, {}};
-  while (!world.done()) {
-    r.total += world.step().counters;
-  }
-  for (const WorldBody& b : world.bodies()) r.names.push_back(b.name);
-  r.trace = world.trace();
-  return r;
-}
 
 // ---- the trace as pieces of path per body --------------------------------------------------
 
@@ -158,6 +121,7 @@ Story tell(const Run& r) {
 // The plot: time [0, tEnd] to pixels [x0, x1]; body rows from y0 down, `rowH` apart.
 struct Layout {
   double x0, x1, y0, rowH, laneH, tEnd;
+  double tick = 0.01;  // seconds between ticks of the time axis (every other one labelled)
   double X(double t) const { return x0 + (x1 - x0) * t / tEnd; }
   double Y(int body, int lane = 0) const { return y0 + rowH * (body + 0.62) - laneH * lane; }
 };
@@ -192,8 +156,8 @@ void drawStory(Canvas& c, double height, const Layout& L, const Run& r, const St
   Pixels px{c, height};
   const int bodies = int(r.names.size());
   // Frames: alternate shading, dashed ends, labels.
-  for (int f = 0; f < kFrames; ++f) {
-    const double a = L.X(f / kFrameRate), b = L.X((f + 1) / kFrameRate);
+  for (int f = 0; f < r.frames; ++f) {
+    const double a = L.X(f / r.frameRate), b = L.X((f + 1) / r.frameRate);
     const double top = L.y0 - 4, bottom = L.y0 + L.rowH * bodies;
     if (f % 2 == 1)
       c.polygon({px.at(a, top), px.at(b, top), px.at(b, bottom), px.at(a, bottom)},
@@ -242,10 +206,11 @@ void drawStory(Canvas& c, double height, const Layout& L, const Run& r, const St
   // The time axis.
   const double yAxis = L.y0 + L.rowH * bodies + 2;
   c.line(px.at(L.x0, yAxis), px.at(L.x1, yAxis), style::axisStroke);
-  for (double t = 0; t <= L.tEnd + 1e-9; t += 0.01) {
-    const bool major = std::lround(t * 100) % 2 == 0;
+  for (double t = 0; t <= L.tEnd + 1e-9; t += L.tick) {
+    const bool major = std::lround(t / L.tick) % 2 == 0;
     c.line(px.at(L.X(t), yAxis), px.at(L.X(t), yAxis + (major ? 5 : 3)), style::axisStroke);
-    if (major) c.text(px.at(L.X(t), yAxis + 5), format("%.2f", t), smallText, Anchor::Below, P2(0, -1));
+    if (major)
+      c.text(px.at(L.X(t), yAxis + 5), format(L.tick >= 0.01 ? "%.2f" : "%.3f", t), smallText, Anchor::Below, P2(0, -1));
   }
   c.text(px.at(L.x1, yAxis + 5), "simulated time (s)", kSmall, Anchor::BelowLeft, P2(0, -18));
 }
@@ -282,25 +247,34 @@ std::string balls(const Run& r, const std::vector<int>& which) {
 
 // ---- fig-timewarp-spacetime.png --------------------------------------------------------
 
-void spacetime(const std::string& out, const Run& r) {
+// `custom`: a reader's scene, laid out for its bodies and collisions (the cradle's is as the
+// paper's figure is kept).
+void spacetime(const std::string& out, const Run& r, bool custom) {
   const Story s = tell(r);
-  const int W = 1250, H = 650;
+  const int rows = int(r.names.size());
+  const int W = 1250, H = custom ? 74 + 78 * rows + 110 + 19 * int(s.collisions.size()) : 650;
   Canvas c(W, H);
   c.setPanel({0, 0, W, H}, 0, 0);
   c.setWorldWindow(0, W, 0, H);
   c.title("");
   Pixels px{c, double(H)};
-  c.text(px.at(W / 2.0, 14), "Timewarp on a Newton's cradle: every ball's local time runs to the frame's end; "
-                            "a collision found there rolls back only its two balls",
+  c.text(px.at(W / 2.0, 14),
+         custom ? "Timewarp: every body's local time runs to the frame's end; a collision found there rolls back "
+                  "only its two bodies"
+                : "Timewarp on a Newton's cradle: every ball's local time runs to the frame's end; "
+                  "a collision found there rolls back only its two balls",
          TextStyle{Font::SansBold, 16, palette::ink}, Anchor::Below);
-  const Layout L{110, double(W) - 40, 74, 78, 13, kFrames / kFrameRate};
+  Layout L{110, double(W) - 40, 74, 78, 13, r.frames / r.frameRate};
+  if (custom) L.tick = chapter::roundStep(L.tEnd, 12);
   drawStory(c, H, L, r, s, true, true);
-  // Where a ball's local time stands after the first flight of frame 1, and what the
-  // frame's end means.
-  const double T1 = 1 / kFrameRate;
-  c.text(px.at(L.X(T1), L.Y(4)), "local time of ball5: T_1", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
-  c.text(px.at(L.X(2 * T1), L.Y(4)), "queue empty: frame 2 final", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
-  double y = L.y0 + L.rowH * 5 + 52;
+  if (!custom) {
+    // Where a ball's local time stands after the first flight of frame 1, and what the
+    // frame's end means.
+    const double T1 = 1 / kFrameRate;
+    c.text(px.at(L.X(T1), L.Y(4)), "local time of ball5: T_1", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
+    c.text(px.at(L.X(2 * T1), L.Y(4)), "queue empty: frame 2 final", kSmallGrey, Anchor::BelowLeft, P2(-4, -4));
+  }
+  double y = L.y0 + L.rowH * rows + 52;
   legend(c, H, 110, y, true);
   // What happened, collision by collision, from the trace.
   y += 28;
@@ -314,7 +288,7 @@ void spacetime(const std::string& out, const Run& r) {
       }
     for (int b = 0; b < int(r.names.size()); ++b)
       if (b != k.i && b != k.j) untouched.push_back(b);
-    const int frame = int(std::floor(k.t * kFrameRate)) + 1;
+    const int frame = int(std::floor(k.t * r.frameRate)) + 1;
     std::string line = std::to_string(k.number) + ".  frame " + std::to_string(frame) + ": " +
                        r.names[std::size_t(k.i)] + " hits " + r.names[std::size_t(k.j)] + " at t_c = " +
                        format("%.4f s", k.t) + ", found after both had flown to " + from + "; rolled back to t_c: " +
@@ -327,8 +301,8 @@ void spacetime(const std::string& out, const Run& r) {
 
 // ---- fig-timewarp-orderings.png --------------------------------------------------------
 
-void orderings(const std::string& out, const std::vector<Run>& runs) {
-  const int W = 1250, panelH = 330, H = panelH * int(runs.size()) + 70;
+void orderings(const std::string& out, const std::vector<Run>& runs, bool custom) {
+  const int W = 1250, panelH = custom ? 100 + 46 * int(runs[0].names.size()) : 330, H = panelH * int(runs.size()) + 70;
   Canvas c(W, H);
   c.setPanel({0, 0, W, H}, 0, 0);
   c.setWorldWindow(0, W, 0, H);
@@ -340,7 +314,9 @@ void orderings(const std::string& out, const std::vector<Run>& runs) {
     const Run& r = runs[k];
     const Story s = tell(r);
     const double top = 40 + panelH * double(k);
-    c.text(px.at(110, top - 8), "\"" + escaped(orderingName(r.ordering)) + "\": " + titles[k],
+    std::string title = titles[k];
+    if (custom) title = std::regex_replace(std::regex_replace(title, std::regex("balls"), "bodies"), std::regex("ball"), "body");
+    c.text(px.at(110, top - 8), "\"" + escaped(orderingName(r.ordering)) + "\": " + title,
            TextStyle{Font::SansBold, 15, palette::ink}, Anchor::BelowRight);
     const FrameCounters& t = r.total;
     const std::string counts = "pair checks " + std::to_string(t.collisionChecks) + "   collisions " +
@@ -350,7 +326,8 @@ void orderings(const std::string& out, const std::vector<Run>& runs) {
                                format("%.1f mm", 1000 * t.maxPenetration);
     c.text(px.at(110, top + 12), counts, TextStyle{Font::Sans, 13.5, kCollision.withAlpha(1), 2.0},
            Anchor::BelowRight);
-    const Layout L{110, double(W) - 40, top + 52, 46, 9, kFrames / kFrameRate};
+    Layout L{110, double(W) - 40, top + 52, 46, 9, r.frames / r.frameRate};
+    if (custom) L.tick = chapter::roundStep(L.tEnd, 12);
     drawStory(c, H, L, r, s, false, r.ordering == Ordering::Timewarp);
     std::printf("%-10s pair checks %ld, collisions %ld, rollbacks %ld, body flights cut %ld, events %ld, "
                 "deepest penetration %.6f m, tunnelled %ld\n",
@@ -364,10 +341,33 @@ void orderings(const std::string& out, const std::vector<Run>& runs) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = chapter::outputFolder(argc, argv);
+  std::string out = ".", scenePath;
+  int frames = kFrames;
+  bool trace = false;
+  CLI::App app{"Draws chapter 07's figures in DIR: Timewarp on a Newton's cradle, or on a scene of your own "
+               "(--scene), under the three orderings. --trace prints the Timewarp run event by event "
+               "(docs/traces.md)."};
+  chapter::addFigureOptions(app, out);
+  chapter::addTraceOption(app, trace);
+  app.add_option("--scene", scenePath, "a scene file, as gjkx_simulate runs (default: the cradle)")->type_name("FILE");
+  app.add_option("--frames", frames, "the frames run and drawn (at most the scene's)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  chapter::parseOrExit(app, argc, argv);
+  std::optional<Scene> scene;
+  if (!scenePath.empty()) {
+    try {
+      scene = loadScene(scenePath);
+    } catch (const std::exception& e) {
+      chapter::badOption(app, "--scene", e.what());
+    }
+  }
+  std::filesystem::create_directories(out);
+  const bool custom = scene.has_value() || frames != kFrames;
   std::vector<Run> runs;
-  for (Ordering o : {Ordering::Timewarp, Ordering::ToiHeap, Ordering::FixedStep}) runs.push_back(run(o));
-  spacetime(out, runs[0]);
-  orderings(out, runs);
+  for (Ordering o : {Ordering::Timewarp, Ordering::ToiHeap, Ordering::FixedStep}) runs.push_back(run(o, scene, frames));
+  if (trace) printTrace(runs[0]);
+  spacetime(out, runs[0], custom);
+  orderings(out, runs, custom);
   return 0;
 }
