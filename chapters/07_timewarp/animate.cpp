@@ -5,7 +5,8 @@
 //
 // reads RUN_DIR/bodies.csv and RUN_DIR/frames.csv, written by `gjkx_simulate SCENE.json --out
 // RUN_DIR` (or by gjkx_bullet_scene), draws the scene's bodies at each frame, in 3D through a
-// camera around the moving bodies or in 2D projected on a coordinate plane, and encodes the
+// camera around the moving bodies or in 2D projected on a coordinate plane (or, for a scene in
+// the plane z = 0, beside its extrusion in space-time: space_time_view.hpp), and encodes the
 // frames with libwebp's animation encoder (webp_animation.hpp). Each frame says its simulated
 // time and the collisions and rollbacks of the run's frame.
 //
@@ -22,6 +23,7 @@
 #include "local_times.hpp"
 #include "scene_run.hpp"
 #include "scene_view.hpp"
+#include "space_time_view.hpp"
 
 #include <gjkx/render/canvas.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -66,8 +68,10 @@ int main(int argc, char** argv) {
   app.add_option("scene", scenePath, "the scene file (JSON) the run was made of")->required()->check(CLI::ExistingFile);
   app.add_option("run", runDir, "the run's folder (gjkx_simulate SCENE --out RUN_DIR); not with --timewarp");
   app.add_option("--out", out, "the animation to write (an animated WebP)")->required();
-  app.add_option("--view", view, "3d: a camera around the moving bodies; xy, xz, yz: projected on that plane")
-      ->check(CLI::IsMember({"3d", "xy", "xz", "yz"}))
+  app.add_option("--view", view,
+                 "3d: a camera around the moving bodies; xy, xz, yz: projected on that plane; spacetime: a scene in "
+                 "the plane z = 0 beside its extrusion in space-time (x, y, t)")
+      ->check(CLI::IsMember({"3d", "xy", "xz", "yz", "spacetime"}))
       ->capture_default_str();
   app.add_option("--size", size, "width x height of the animation in pixels")->capture_default_str();
   app.add_option("--fps", fps, "frames shown per second (default: the scene's frame rate, so real time)")
@@ -109,7 +113,7 @@ int main(int argc, char** argv) {
     std::cerr << "gjkx_animate: --to must be after --from\n";
     return chapter::kUsageError;
   }
-  if (view == "3d" && !canDraw3d()) {
+  if ((view == "3d" || view == "spacetime") && !canDraw3d()) {
     std::cerr << "gjkx_animate: this build draws no 3D (no OSMesa): use --view xy, xz or yz\n";
     return 1;
   }
@@ -145,7 +149,9 @@ int main(int argc, char** argv) {
         Canvas canvas(width, height);
         canvas.setPanel({0, 0, width, height}, 6, 30);
         canvas.title(title);
-        animation::drawFrame(canvas, looks, f, camera);
+        if (view == "spacetime") animation::drawSpaceTime(canvas, looks, shown, i, camera, 34, height - 62);
+        else animation::drawFrame(canvas, looks, f, camera);
+        canvas.setPanel({0, 0, width, height}, 0, 0);
         std::string caption = "t = " + format("%.3f s", f.time);
         if (f.frame > 0)
           caption += "   frame " + std::to_string(f.frame) + ": " + std::to_string(f.collisions) + " collisions, " +

@@ -164,6 +164,7 @@ inline void setView(gjkx::render::Canvas& canvas, const View& view) {
   if (view.kind == "3d") {
     const double radius = std::max(0.5 * (view.hi - view.lo).norm(), 1e-6) / view.zoom;
     canvas.setCamera(Camera::orbit(center, radius, view.azimuth, view.elevation, 0.6, canvas.plotAspect()));
+    canvas.setClip(canvas.plotArea());
     return;
   }
   const auto [u, w] = view.axes();
