@@ -1,5 +1,6 @@
 // Running one of the project's programs as a user runs it, for the tests that check a
-// program's output and exit status (gjkx_simulate, gjkx_bullet_scene).
+// program's output and exit status (gjkx_simulate, gjkx_bullet_scene, gjkx_mujoco_scene),
+// and its SUMMARY line and CSV files read back.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -9,7 +10,11 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace test {
 
@@ -39,6 +44,32 @@ inline std::filesystem::path freshFolder(const std::string& prefix, const std::s
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+/// The key=value pairs of the SUMMARY line of a program's `output` (empty if it has none).
+inline std::map<std::string, double> summaryKeys(const std::string& output) {
+  std::map<std::string, double> keys;
+  const auto at = output.find("SUMMARY ");
+  if (at == std::string::npos) return keys;
+  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
+  for (std::string item; line >> item;) {
+    const auto eq = item.find('=');
+    if (eq != std::string::npos) keys[item.substr(0, eq)] = std::stod(item.substr(eq + 1));
+  }
+  return keys;
+}
+
+/// The rows of a CSV file (the header first), split at commas.
+inline std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream cellsIn(line);
+    for (std::string cell; std::getline(cellsIn, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
 }
 
 }  // namespace test

@@ -8,14 +8,19 @@
 //   RATIO timewarp_<chosen>_wall_per_sim_s=<Timewarp's wall per simulated second>
 // The independent checks are off (they are not part of the method); the collisions
 // columns show whether the orderings resolved the same number of impacts.
+// --write-scene FILE writes the pile as a scene file instead (and runs nothing), so that
+// gjkx_simulate and the peers' runners of chapter 08 run the same bodies.
 #include "../command_line.hpp"
 
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
 
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <random>
+#include <sstream>
+#include <string>
 
 namespace {
 
@@ -75,6 +80,43 @@ gjkx::Scene fallingIntoABox(int count, double duration, unsigned seed) {
   return scene;
 }
 
+/// The pile as a scene file (gjkx/timewarp/scene.hpp's keys), every number with all its
+/// digits, so that the file is the same bodies.
+std::string sceneJson(const gjkx::Scene& scene, const std::string& contact) {
+  std::ostringstream out;
+  out.precision(17);
+  auto vec = [&](const Eigen::Vector3d& v) { out << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']'; };
+  out << "{\n  \"duration\": " << scene.duration << ",\n  \"contact\": \"" << contact << "\",\n  \"bodies\": [";
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const gjkx::BodySpec& b = scene.bodies[k];
+    out << (k ? ",\n" : "\n") << "    { \"name\": \"" << b.name << "\", \"shape\": {";
+    switch (b.shape.kind) {
+      case gjkx::ShapeSpec::Kind::Box: out << "\"box\": ", vec(b.shape.halfExtents); break;
+      case gjkx::ShapeSpec::Kind::Sphere: out << "\"sphere\": " << b.shape.radius; break;
+      case gjkx::ShapeSpec::Kind::Capsule:
+        out << "\"capsule\": [" << b.shape.radius << ", " << b.shape.halfLength << ']';
+        break;
+      default:  // the pile's polytopes (it has no other shape)
+        out << "\"polytope\": [";
+        for (std::size_t v = 0; v < b.shape.points.size(); ++v) out << (v ? ", " : ""), vec(b.shape.points[v]);
+        out << ']';
+    }
+    out << "}, \"position\": ", vec(b.position);
+    if (b.isStatic) {
+      out << ", \"static\": true }";
+      continue;
+    }
+    const Eigen::Quaterniond& q = b.orientation;
+    out << ", \"orientation\": [" << q.w() << ", " << q.x() << ", " << q.y() << ", " << q.z() << "], \"velocity\": ";
+    vec(b.velocity);
+    out << ", \"angular_velocity\": ";
+    vec(b.angularVelocity);
+    out << " }";
+  }
+  out << "\n  ]\n}\n";
+  return out.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -91,8 +133,18 @@ int main(int argc, char** argv) {
   app.add_option("--contact", contact, "the model of resting contact of the orderings' runs (Timewarp is also run under the other)")
       ->check(CLI::IsMember({"hybrid", "microcollisions"}))
       ->capture_default_str();
+  std::string writeScene;
+  app.add_option("--write-scene", writeScene, "write the pile as a scene file (with --contact) and run nothing");
   chapter::parseOrExit(app, argc, argv);
 
+  if (!writeScene.empty()) {
+    std::ofstream file(writeScene);
+    if (!(file << sceneJson(fallingIntoABox(count, duration, 2026), contact))) {
+      std::fprintf(stderr, "timewarp_benchmark: cannot write %s\n", writeScene.c_str());
+      return 1;
+    }
+    return 0;
+  }
   std::printf("%d bodies into a box, %.2f s simulated, collision detection in %s, contact model %s\n", count, duration,
               scalar.c_str(), contact.c_str());
   std::printf("%-11s %10s %9s %9s %11s %10s %8s | %6s %6s %6s %6s %6s\n", "ordering", "wall/sim_s", "collisions",

@@ -2,6 +2,8 @@
 // body frames handed to Bullet, and Bullet's poses read back in our body frames.
 #pragma once
 
+#include "peer_run.hpp"
+
 #include <gjkx/mesh/triangle_mesh.hpp>
 #include <gjkx/timewarp/body.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -16,8 +18,6 @@
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <LinearMath/btGeometryUtil.h>
 #include <btBulletDynamicsCommon.h>
-
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <limits>
@@ -108,26 +108,8 @@ struct BulletBody {
   double halfThickness = 0;
 };
 
-/// Our inertia in Bullet's terms: Bullet takes a diagonal inertia in the body's own axes.
-/// Our body frame is at the centre of mass but along the shape's axes, where a polytope or
-/// a mesh has products of inertia; their principal axes (the eigenvectors, turned to a
-/// right-handed frame) become Bullet's body axes. A diagonal inertia keeps our axes.
-inline std::pair<Eigen::Matrix3d, Eigen::Vector3d> principalAxes(const Eigen::Matrix3d& inertia) {
-  const Eigen::Matrix3d off = inertia - Eigen::Matrix3d(inertia.diagonal().asDiagonal());
-  if (off.cwiseAbs().maxCoeff() <= 1e-12 * inertia.trace()) return {Eigen::Matrix3d::Identity(), inertia.diagonal()};
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
-  Eigen::Matrix3d axes = solver.eigenvectors();
-  if (axes.determinant() < 0) axes.col(2) = -axes.col(2);
-  return {axes, solver.eigenvalues()};
-}
-
-/// The vertices of a convex piece, in Bullet's body frame.
-inline std::vector<Eigen::Vector3d> principalVertices(const gjkx::Shape<double>& piece, const Eigen::Matrix3d& bodyFromPrincipal) {
-  const auto& polytope = std::get<gjkx::Polytope<double>>(piece.variant());
-  std::vector<Eigen::Vector3d> out;
-  for (int v = 0; v < polytope.vertexCount(); ++v) out.push_back(bodyFromPrincipal.transpose() * polytope.vertex(v));
-  return out;
-}
+using peer_run::principalAxes;
+using peer_run::principalVertices;
 
 /// A convex hull shape for Bullet from our piece (shrunk by its margin, see hullForBullet).
 inline std::unique_ptr<btCollisionShape> hullShape(const std::vector<Eigen::Vector3d>& vertices, double& halfThickness) {

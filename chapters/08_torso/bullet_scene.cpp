@@ -2,7 +2,7 @@
 // library most people would reach for, and measures the run with the same independent
 // checks as gjkx_simulate --checks (gjkx/verify/frame_verifier.hpp), so that the two can be compared.
 //
-//   gjkx_bullet_scene SCENE.json [--out DIR] [--substeps N] [--no-ccd] [--quiet]
+//   gjkx_bullet_scene SCENE.json [--out DIR] [--substeps N] [--duration S] [--no-ccd] [--quiet]
 //
 // writes DIR/frames.csv (per frame: frame, time, wall seconds of Bullet, deepest
 // penetration, kinetic energy, pairs Bullet had in contact, pairs that tunnelled, seconds
@@ -23,42 +23,28 @@
 // on the same shapes.
 //
 // The same checks. After every frame, the same observer our world attaches
-// (gjkx::FrameVerifier): the signed distance of every pair whose bounds meet, at the
-// frame's end, by the reference (its negative is the penetration), and, for a pair Bullet
-// had no contact point for during the frame, whether the pair interpenetrated (came closer
-// than minus twice the collision tolerance) at any time of the frame. Each finding is
-// named on standard error and in DIR/checks.csv. Between frames our world moves a body on a free-flight path: a
-// parabola under gravity for its centre of mass and a rotation turning at a constant rate
-// along the shortest arc (gjkx::FreeFlightPath). Bullet gives only the poses at the
-// frame's ends, and a free-flight path is fitted to them: the same rotation, and the one
-// parabola under the scene's gravity that joins the two centres (velocity
-// (p1 - p0)/dt - g dt/2 at the start). For a body in free flight this is the path it
-// flew; for one that collided within the frame the pair is exempt anyway, as in our run.
-// Like ours, the fit cannot represent a body turning half a turn or more within a frame.
+// (gjkx::FrameVerifier, through peer_run.hpp, which every peer's runner shares): the signed
+// distance of every pair whose bounds meet, at the frame's end, by the reference (its
+// negative is the penetration), and, for a pair Bullet had no contact point for during the
+// frame, whether the pair interpenetrated (came closer than minus twice the collision
+// tolerance) at any time of the frame, on the free-flight path fitted to Bullet's poses at
+// the frame's ends (peer_run.hpp). Each finding is named on standard error and in
+// DIR/checks.csv.
 #include "../command_line.hpp"
 #include "bullet_bodies.hpp"
+#include "peer_run.hpp"
 
 #include <gjkx/timewarp/body.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/verify/frame_verifier.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <set>
-#include <utility>
 #include <vector>
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 using namespace bullet_bodies;
 
@@ -71,20 +57,15 @@ class BulletWorld : public btDiscreteDynamicsWorld {
   const btAlignedObjectArray<btPersistentManifold*>& predictiveManifolds() const { return m_predictiveManifolds; }
 };
 
-/// What the internal-step callback gathers: the body pairs Bullet had a contact point for.
-struct ContactLog {
-  std::set<std::pair<int, int>> pairs;
-};
-
-void recordManifold(const btPersistentManifold* m, ContactLog& log) {
+void recordManifold(const btPersistentManifold* m, peer_run::ContactPairs& log) {
   if (m->getNumContacts() == 0) return;
-  const int a = m->getBody0()->getUserIndex(), b = m->getBody1()->getUserIndex();
-  if (a >= 0 && b >= 0 && a != b) log.pairs.insert({std::min(a, b), std::max(a, b)});
+  peer_run::addPair(log, m->getBody0()->getUserIndex(), m->getBody1()->getUserIndex());
 }
 
-/// Called by Bullet after each internal step: every pair with a contact point in it.
+/// Called by Bullet after each internal step: every pair with a contact point in it (into
+/// the world's user info, the frame's peer_run::ContactPairs).
 void afterStep(btDynamicsWorld* world, btScalar) {
-  auto* log = static_cast<ContactLog*>(world->getWorldUserInfo());
+  auto* log = static_cast<peer_run::ContactPairs*>(world->getWorldUserInfo());
   btDispatcher* dispatcher = world->getDispatcher();
   for (int k = 0; k < dispatcher->getNumManifolds(); ++k) recordManifold(dispatcher->getManifoldByIndexInternal(k), *log);
   const auto& predictive = static_cast<BulletWorld*>(world)->predictiveManifolds();
@@ -120,68 +101,23 @@ gjkx::Pose<double> ourPose(const btRigidBody& rigid, const BulletBody& body) {
   return pose;
 }
 
-/// The free-flight path that joins two poses over [t0, t1] (see the file's head).
-gjkx::Motion<double> fittedPath(const gjkx::Pose<double>& from, const gjkx::Pose<double>& to, const Eigen::Vector3d& gravity,
-                                double t0, double t1) {
-  const double dt = t1 - t0;
-  const Eigen::Vector3d velocity = (to.translation - from.translation) / dt - 0.5 * gravity * dt;
-  return gjkx::Motion<double>::freeFlight(from, velocity, gravity, to.rotation, t0, t1);
-}
-
-/// A body's path over the frame as the checks take it: the fitted free-flight path, its
-/// centre's velocity at both ends (a parabola's: v0 and v0 + g dt) and the slerp's constant
-/// turning rate as its spin at both ends.
-gjkx::PathPiece checkedPath(const gjkx::Motion<double>& motion, const gjkx::Pose<double>& from,
-                            const gjkx::Pose<double>& to, double t0, double t1) {
-  gjkx::FreeFlight path;
-  path.t0 = t0;
-  path.t1 = t1;
-  path.motion = motion;
-  path.start.worldFromBody = from;
-  path.end.worldFromBody = to;
-  if (const auto* f = std::get_if<gjkx::FreeFlightPath<double>>(&motion.variant())) {
-    path.start.velocity = f->velocity;
-    path.end.velocity = f->velocity + f->acceleration * (t1 - t0);
-    const double spin = motion.bound().angularSpeed;
-    path.start.angularVelocity = path.end.angularVelocity = Eigen::Vector3d(spin, 0, 0);
-  }
-  return {path, t1};
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file in Bullet (btDiscreteDynamicsWorld, CCD on every moving body) and measures "
                "penetration and tunnelling with the same independent checks as gjkx_simulate.",
                "gjkx_bullet_scene"};
-  std::string scenePath, out = ".";
-  int substeps = 0;
-  bool noCcd = false, quiet = false;
-  app.add_option("scene", scenePath, "the scene file (JSON)")->required();
-  app.add_option("--out", out, "folder for frames.csv and bodies.csv (created)");
-  app.add_option("--substeps", substeps,
-                 "Bullet's internal steps per frame (default: enough for steps of at most 1/240 s)")
-      ->check(CLI::Range(1, 100000));
+  peer_run::CommandLine options;
+  bool noCcd = false;
+  options.addTo(app, "enough for steps of at most 1/240 s");
   app.add_flag("--no-ccd", noCcd, "leave Bullet's continuous collision detection off");
-  app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
-
-  gjkx::Scene scene;
-  std::vector<gjkx::WorldBody> bodies;
-  std::unique_ptr<gjkx::FrameVerifier> verifier;
-  try {
-    scene = gjkx::loadScene(scenePath);
-    bodies = gjkx::buildBodies(scene, gjkx::frameCount(scene) / scene.frameRate);
-    // The checks' view of the bodies, prepared once (the plant's tree of 8,640 pieces); 5%
-    // spare on the speed bound, for Bullet's float poses.
-    verifier = std::make_unique<gjkx::FrameVerifier>(gjkx::verifiedBodies(bodies), scene.collisionTolerance,
-                                                     scene.gravity, 1.05);
-  } catch (const std::exception& e) {
-    std::cerr << "gjkx_bullet_scene: " << e.what() << "\n";
-    return 1;
-  }
-  const int frames = gjkx::frameCount(scene);
-  const double frameDt = 1.0 / scene.frameRate;
+  peer_run::PeerScene loaded;
+  if (!options.load("gjkx_bullet_scene", loaded)) return 1;
+  int substeps = options.substeps;
+  const gjkx::Scene& scene = loaded.scene;
+  const std::vector<gjkx::WorldBody>& bodies = loaded.bodies;
+  const double frameDt = loaded.frameDt;
   // Bullet's step: its manual's default internal step is 1/60 s, which its users are told to
   // shorten for accuracy; PyBullet, Bullet's own front end, steps 1/240 s by default. So:
   // at most 1/240 s, a whole number of steps per frame.
@@ -195,8 +131,7 @@ int main(int argc, char** argv) {
   btSequentialImpulseConstraintSolver solver;
   BulletWorld world(&dispatcher, &broadphase, &solver, &configuration);
   world.setGravity(toBullet(scene.gravity));
-  ContactLog contacts;
-  world.setInternalTickCallback(afterStep, &contacts);
+  world.setInternalTickCallback(afterStep, nullptr);  // its log: the frame's pairs, set by stepFrame below
 
   std::vector<BulletBody> bullet(bodies.size());
   try {
@@ -246,100 +181,24 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  std::filesystem::create_directories(out);
-  std::ofstream framesCsv(out + "/frames.csv"), bodiesCsv(out + "/bodies.csv"), checksCsv(out + "/checks.csv");
-  if (!framesCsv || !bodiesCsv || !checksCsv) {
-    std::cerr << "gjkx_bullet_scene: cannot write to " << out << "\n";
-    return 1;
-  }
-  framesCsv << "frame,time,wall_s,max_penetration,kinetic_energy,contact_pairs,tunnelled,checks_s\n";
-  bodiesCsv << "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
-  checksCsv << "frame,time,kind,body,other,depth\n";
-
-  auto stateOf = [&](std::size_t b) {
+  peer_run::Peer peer;
+  peer.stepFrame = [&](peer_run::ContactPairs& pairs) {
+    world.setWorldUserInfo(&pairs);
+    // One internal step per call: a time step equal to the fixed step is exactly one
+    // step, with no time left over for Bullet to interpolate.
+    for (int s = 0; s < substeps; ++s) world.stepSimulation(btScalar(step), 1, btScalar(step));
+  };
+  peer.state = [&](std::size_t b) {
     gjkx::BodyState s;
     s.worldFromBody = ourPose(*bullet[b].rigid, bullet[b]);
     s.velocity = fromBullet(bullet[b].rigid->getLinearVelocity());
     s.angularVelocity = fromBullet(bullet[b].rigid->getAngularVelocity());
     return s;
   };
-  auto kineticEnergy = [&]() {
-    double sum = 0;
-    for (std::size_t b = 0; b < bodies.size(); ++b) sum += bodies[b].rigid.kineticEnergy(stateOf(b));
-    return sum;
+  peer.touchingAtEnd = [&](int i, int j) {
+    return touchesAtEnd(world, *bullet[std::size_t(i)].rigid, *bullet[std::size_t(j)].rigid);
   };
-  const double kineticStart = kineticEnergy();
-  double kineticEnd = kineticStart, kineticMax = kineticStart, maxPenetration = 0, wall = 0;
-  int tunnelled = 0;
-  std::vector<gjkx::Pose<double>> before(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) before[b] = ourPose(*bullet[b].rigid, bullet[b]);
-  const bool bar = !quiet && isatty(fileno(stderr));
-
-  try {
-    for (int frame = 1; frame <= frames; ++frame) {
-      const double T0 = double(frame - 1) * frameDt, T1 = double(frame) * frameDt;
-      contacts.pairs.clear();
-      const auto start = Clock::now();
-      // One internal step per call: a time step equal to the fixed step is exactly one
-      // step, with no time left over for Bullet to interpolate.
-      for (int s = 0; s < substeps; ++s) world.stepSimulation(btScalar(step), 1, btScalar(step));
-      const double frameWall = std::chrono::duration<double>(Clock::now() - start).count();
-      wall += frameWall;
-
-      // The checks (not timed as Bullet's work).
-      const auto checksStart = Clock::now();
-      std::vector<std::vector<gjkx::PathPiece>> paths(bodies.size());
-      for (std::size_t b = 0; b < bodies.size(); ++b) {
-        const gjkx::Pose<double> after = ourPose(*bullet[b].rigid, bullet[b]);
-        const gjkx::Motion<double> motion = bodies[b].rigid.isStatic()
-                                                ? gjkx::Motion<double>::fixed(after)
-                                                : fittedPath(before[b], after, scene.gravity, T0, T1);
-        paths[b].push_back(checkedPath(motion, before[b], after, T0, T1));
-        before[b] = after;
-      }
-      const gjkx::FrameVerdict verdict = verifier->check(frame, T0, T1, paths, [&](int i, int j) {
-        return contacts.pairs.count({i, j}) > 0 || touchesAtEnd(world, *bullet[i].rigid, *bullet[j].rigid);
-      });
-      for (const gjkx::Finding& f : verdict.findings) {
-        const std::string& a = bodies[std::size_t(f.i)].name;
-        const std::string& b = bodies[std::size_t(f.j)].name;
-        checksCsv << f.frame << ',' << f.time << ',' << gjkx::findingName(f.kind) << ',' << a << ',' << b << ','
-                  << f.depth << '\n';
-        if (f.kind == gjkx::Finding::Kind::Tunnelling)
-          std::cerr << "gjkx_bullet_scene: frame " << f.frame << ", t = " << f.time << ": '" << a << "' and '" << b
-                    << "' interpenetrated with no contact\n";
-      }
-      const double penetration = verdict.maxPenetration;
-      const int tunnelledNow = int(verdict.tunnelled);
-      const double checks = std::chrono::duration<double>(Clock::now() - checksStart).count();
-      maxPenetration = std::max(maxPenetration, penetration);
-      tunnelled += tunnelledNow;
-      kineticEnd = kineticEnergy();
-      kineticMax = std::max(kineticMax, kineticEnd);
-      framesCsv << frame << ',' << T1 << ',' << frameWall << ',' << penetration << ',' << kineticEnd << ','
-                << contacts.pairs.size() << ',' << tunnelledNow << ',' << checks << '\n';
-      for (std::size_t b = 0; b < bodies.size(); ++b) {
-        const gjkx::BodyState s = stateOf(b);
-        const Eigen::Vector3d x = s.worldFromBody(bodies[b].frameOrigin);  // the scene frame's origin
-        const Eigen::Quaterniond q(s.worldFromBody.rotation);
-        bodiesCsv << frame << ',' << T1 << ',' << bodies[b].name << ',' << x.x() << ',' << x.y() << ',' << x.z() << ','
-                  << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << s.velocity.x() << ','
-                  << s.velocity.y() << ',' << s.velocity.z() << ',' << s.angularVelocity.x() << ','
-                  << s.angularVelocity.y() << ',' << s.angularVelocity.z() << ','
-                  << bodies[b].rigid.kineticEnergy(s) << '\n';
-      }
-      if (bar) chapter::progress(frame, frames, wall);
-    }
-  } catch (const std::exception& e) {
-    if (bar) std::fprintf(stderr, "\n");
-    std::cerr << "gjkx_bullet_scene: " << e.what() << "\n";
-    return 1;
-  }
-  if (bar) std::fprintf(stderr, "\n");
+  const int status = peer_run::measure("gjkx_bullet_scene", loaded, peer, substeps, options.out, options.quiet);
   for (auto& bb : bullet) world.removeRigidBody(bb.rigid.get());
-  std::printf("SUMMARY frames=%d sim_s=%.6g wall_s=%.6g steps=%d max_penetration=%.6g tunnelled=%d "
-              "kinetic_start=%.6g kinetic_end=%.6g kinetic_max=%.6g\n",
-              frames, double(frames) * frameDt, wall, frames * substeps, maxPenetration, tunnelled, kineticStart,
-              kineticEnd, kineticMax);
-  return 0;
+  return status;
 }

@@ -14,6 +14,10 @@
 //                           run's frames.csv (the script running_time.gp beside this file,
 //                           its data in data/ of the figures folder). Without the run, or
 //                           without gnuplot, it is skipped.
+//   fig06-torso-running-time-hybrid.png: its companion, on the same axes: the same scene
+//                           under the hybrid contact model (the paper's future work), from
+//                           the kept run figures/data/torso-run-hybrid/frames.csv
+//                           (--hybrid-run DIR); skipped without it.
 // Options: --run DIR reads DIR/bodies.csv and DIR/frames.csv instead; --frames DIR writes one
 // PNG per frame of the run (an animation); --seed N and --reduced must match how the run's
 // scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
@@ -31,6 +35,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 using namespace gjkx::render;
@@ -38,6 +43,9 @@ using torso::V3;
 
 #ifndef GJKX_TORSO_RUN
 #define GJKX_TORSO_RUN "figures/data/torso-run"
+#endif
+#ifndef GJKX_TORSO_RUN_HYBRID  // the same scene under the hybrid contact model (Fig. 6's companion)
+#define GJKX_TORSO_RUN_HYBRID "figures/data/torso-run-hybrid"
 #endif
 #ifndef GJKX_TORSO_RUNNING_TIME_GP  // Fig. 6's gnuplot script, beside this file
 #define GJKX_TORSO_RUNNING_TIME_GP "chapters/08_torso/running_time.gp"
@@ -195,7 +203,7 @@ std::string runDescription(const torso::Run& run) {
   const std::filesystem::path scene(key["scene"]);
   return key["bodies"] + " bodies (" + scene.parent_path().filename().string() + "/" + scene.filename().string() +
          "), " + key["scalar"] + ", " + key["variant"] + " extrusion test, tolerance " + key["tolerance"] + ", " +
-         key["frame_rate"] + " frames/s";
+         key["frame_rate"] + " frames/s" + (key.count("contact") ? ", " + key["contact"] + " contact" : "");
 }
 
 /// A string for gnuplot: single-quoted, so that nothing in it is an escape ('' is a quote).
@@ -212,6 +220,39 @@ std::string shellWord(const std::string& text) {
   return quoted + "'";
 }
 
+/// Fig. 6's axes (running_time.gp says what each is).
+struct Fig6Axes {
+  bool twoPanels = false;  ///< the frames and the paper's range span more than a factor 30
+  double bottom = 0, top = 0;  ///< with two panels: the log axis's range
+  double stackTop = 0;     ///< the linear axis's top
+  double xmax = 0;         ///< the simulated time at the run's end
+};
+
+/// The axes that show every run of `runs` whole beside the paper's range.
+Fig6Axes fig6Axes(const std::vector<const torso::Run*>& runs) {
+  using P = torso::PaperFigures;
+  double lo = P::ratioMin, hi = P::ratioMax, ours = 0;
+  Fig6Axes axes;
+  for (const torso::Run* run : runs) {
+    for (std::size_t k = 0; k < run->frames(); ++k) {
+      const double r = run->ratio(k);
+      if (r > 0) lo = std::min(lo, r);
+      hi = std::max(hi, r);
+      ours = std::max(ours, r);
+    }
+    axes.xmax = std::max(axes.xmax, run->at("time").back());
+  }
+  axes.twoPanels = hi / lo > 30;
+  if (axes.twoPanels) {
+    axes.bottom = std::pow(10.0, std::floor(std::log10(lo)));
+    axes.top = std::pow(10.0, std::ceil(std::log10(hi * 1.5)));
+    axes.stackTop = ours * 1.1;
+  } else {
+    axes.stackTop = hi * 1.1;
+  }
+  return axes;
+}
+
 /// Fig. 6 from `run`'s frames.csv: per frame, the method's wall time over the frame's
 /// simulated time, stacked by part (methodParts()), against the time at the frame's end;
 /// the real-time line y = 1 and the paper's range 1.0-7.9 for comparison. Writes
@@ -219,21 +260,18 @@ std::string shellWord(const std::string& text) {
 /// running_time.gp beside this file there, passing it the data, the axes' ranges and the
 /// texts (when the frames and the paper's range span more than a factor 30 it draws two
 /// panels: see the script); returns false (and says why) when gnuplot is missing or fails.
-bool runningTimeFigure(const std::string& out, const torso::Run& run) {
+/// `name` is the figure's file name; `axes` its axes (those of its own run, or, for the
+/// companion figure of the hybrid run, Fig. 6's, so that the two compare at a glance).
+bool runningTimeFigure(const std::string& out, const torso::Run& run, const std::string& name, const Fig6Axes& axes) {
   using P = torso::PaperFigures;
-  const auto& parts = torso::methodParts();
-  const std::string folder = out + "/data", name = "fig06-torso-running-time";
+  const auto parts = run.parts();
+  const std::string folder = out + "/data";
   std::filesystem::create_directories(folder);
-  double lo = P::ratioMin, hi = P::ratioMax, ours = 0, wall = 0, checks = 0;
+  double wall = 0, checks = 0;
   for (std::size_t k = 0; k < run.frames(); ++k) {
-    const double r = run.ratio(k);
-    if (r > 0) lo = std::min(lo, r);
-    hi = std::max(hi, r);
-    ours = std::max(ours, r);
     wall += run.at("wall_s")[k];
     checks += run.at("checks_s")[k];
   }
-  const bool twoPanels = hi / lo > 30;
   std::ofstream csv(folder + "/" + name + ".csv");
   csv << "# written by 08_torso from the frames.csv of the run " << std::filesystem::path(run.folder).filename().string() << ": execution time of each frame over its simulated "
       << "time, the top of each part stacked bottom to top, at the frame's start and end (a step per frame)\ntime";
@@ -261,12 +299,11 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run) {
       << gnuplotString(chapter::format("(not the method): %.0f%% of wall time", 100 * (wall > 0 ? checks / wall : 0)))
       << "; band=" << gnuplotString(chapter::format("paper (500 MHz Pentium III): %.1f to %.1f", P::ratioMin, P::ratioMax))
       << "; ratioMin=" << std::to_string(P::ratioMin) << "; ratioMax=" << std::to_string(P::ratioMax)
-      << "; xmax=" << run.at("time").back() << "; twoPanels=" << (twoPanels ? 1 : 0);
-  if (twoPanels)
-    set << "; bottom=" << std::pow(10.0, std::floor(std::log10(lo))) << "; top=" << std::pow(10.0, std::ceil(std::log10(hi * 1.5)))
-        << "; stackTop=" << ours * 1.1;
+      << "; xmax=" << axes.xmax << "; twoPanels=" << (axes.twoPanels ? 1 : 0);
+  if (axes.twoPanels)
+    set << "; bottom=" << axes.bottom << "; top=" << axes.top << "; stackTop=" << axes.stackTop;
   else
-    set << "; stackTop=" << hi * 1.1;
+    set << "; stackTop=" << axes.stackTop;
   if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
     std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped Fig. 6\n";
     return false;
@@ -307,13 +344,16 @@ void statsTable(const std::vector<std::string>& specs, const std::string& table,
 int main(int argc, char** argv) {
   CLI::App app{"Draws chapter 08's figures: the generated torso and plant, and Fig. 5 (the torso crashing into "
                "the plant) from a kept run of gjkx_simulate."};
-  std::string out = ".", run = GJKX_TORSO_RUN, framesDir;
+  std::string out = ".", run = GJKX_TORSO_RUN, hybridRun = GJKX_TORSO_RUN_HYBRID, framesDir;
   std::uint32_t seed = 1;
   bool reduced = false;
   std::vector<std::string> statsRuns;
   std::string table;
   chapter::addFigureOptions(app, out);
   app.add_option("--run", run, "the folder of the run (bodies.csv of gjkx_simulate)")->capture_default_str();
+  app.add_option("--hybrid-run", hybridRun,
+                 "the folder of the same scene's run under the hybrid contact model (frames.csv), drawn beside Fig. 6")
+      ->capture_default_str();
   app.add_option("--frames", framesDir, "also write one figure per frame of the run into this folder");
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
       ->capture_default_str();
@@ -370,11 +410,24 @@ int main(int argc, char** argv) {
       torso::closeUpRow(canvas, layout, std::vector<Frame>(panels, panels + 4), std::vector<const char*>(names, names + 4), W, H, drawScene);
       chapter::save(canvas, out, "fig05-torso-crash");
     }
+    // Fig. 6 and its companion, the same scene under the hybrid contact model, on the same
+    // axes (those that show both runs whole), so that the two compare at a glance.
+    std::optional<torso::Run> kept, hybrid;
     if (std::filesystem::exists(run + "/frames.csv"))
-      runningTimeFigure(out, torso::readRun(run));
+      kept = torso::readRun(run);
     else
       std::cerr << "08_torso: warning: no kept run at " << run
                 << "/frames.csv; Fig. 6 (fig06-torso-running-time.png) skipped\n";
+    if (std::filesystem::exists(hybridRun + "/frames.csv"))
+      hybrid = torso::readRun(hybridRun);
+    else
+      std::cerr << "08_torso: warning: no kept run at " << hybridRun
+                << "/frames.csv; fig06-torso-running-time-hybrid.png skipped\n";
+    std::vector<const torso::Run*> shown;
+    for (const auto* r : {&kept, &hybrid})
+      if (*r) shown.push_back(&**r);
+    if (kept) runningTimeFigure(out, *kept, "fig06-torso-running-time", fig6Axes(shown));
+    if (hybrid) runningTimeFigure(out, *hybrid, "fig06-torso-running-time-hybrid", fig6Axes(shown));
     if (!framesDir.empty()) {
       if (frames.empty()) throw std::runtime_error("--frames needs a run: " + run + "/bodies.csv is missing");
       std::filesystem::create_directories(framesDir);

@@ -37,13 +37,17 @@ struct PaperFigures {
 /// The parts of a frame's wall time that are the method's, as Fig. 6 stacks them (the
 /// columns of frames.csv, bottom to top). The independent checks (`checks_s`) are not
 /// the method's and are left out; drawing has no column (gjkx_simulate draws nothing).
+/// The last, the hybrid contact model's contact solver (`contacts_s`), is the paper's
+/// future work (§6: "a more robust hybrid implementation remains as future work"): a run
+/// without the column (an older frames.csv) counts it as none.
 inline const std::vector<std::pair<std::string, std::string>>& methodParts() {
   static const std::vector<std::pair<std::string, std::string>> parts = {
       {"integration_s", "integration"},
       {"bounds_s", "bounding volumes"},
       {"collision_detection_s", "collision detection (GJK extrusion, TOI)"},
       {"impulses_s", "impulses"},
-      {"ordering_s", "Timewarp ordering"}};
+      {"ordering_s", "Timewarp ordering"},
+      {"contacts_s", "contact solver (the hybrid)"}};
   return parts;
 }
 
@@ -71,11 +75,26 @@ struct Run {
     const auto& time = at("time");
     return k > 0 ? time[k] - time[k - 1] : time[0] / at("frame")[0];
   }
-  /// The method's wall time of frame `k` (s): the sum of methodParts(), the checks left out.
+  /// Whether frames.csv has the column.
+  bool has(const std::string& name) const { return column.count(name) > 0; }
+  /// The method's wall time of frame `k` (s): the sum of methodParts() the run has, the checks left out.
   double methodSeconds(std::size_t k) const {
     double sum = 0;
-    for (const auto& part : methodParts()) sum += at(part.first)[k];
+    for (const auto& part : methodParts())
+      if (has(part.first)) sum += at(part.first)[k];
     return sum;
+  }
+  /// The parts Fig. 6 stacks for this run: methodParts() less a column the run lacks or that
+  /// is 0 in every frame (the contact solver of a run under microcollisions).
+  std::vector<std::pair<std::string, std::string>> parts() const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& part : methodParts()) {
+      if (!has(part.first)) continue;
+      const auto& values = at(part.first);
+      if (part.first == methodParts().front().first || std::any_of(values.begin(), values.end(), [](double v) { return v != 0; }))
+        out.push_back(part);
+    }
+    return out;
   }
   /// Frame `k`'s execution time over its simulated time: 1 is real time.
   double ratio(std::size_t k) const { return methodSeconds(k) / frameLength(k); }
@@ -178,6 +197,15 @@ struct RunStats {
   double completeTests = -1;    ///< complete extrusion tests (summary.txt's WORK line; -1: not recorded)
   double sdEvaluations = -1;    ///< supporting distances evaluated by the queries (-1: not recorded)
   double kdopNodes = -1;        ///< nodes of the 14-DOP test trees visited (-1: not recorded)
+  // The hybrid contact model's columns (docs 07; -1: not recorded, an older frames.csv).
+  double contactsSeconds = -1;  ///< wall time of the contact part (contacts_s), of methodSeconds
+  double contactPoints = -1;    ///< manifold points solved per frame (summed over its intervals): mean
+  double contactPointsMax = -1; ///< and the most in a frame
+  double contactGroups = -1;    ///< contact groups solved per frame: mean
+  double contactSweeps = -1;    ///< sweeps of sequential impulses per frame: mean
+  double energyRises = -1;      ///< group solves whose kinetic energy rose: total
+  double sleepingEnd = -1;      ///< bodies asleep at the last frame's end
+  double sleepingMax = -1;      ///< the most asleep at a frame's end
 };
 
 /// The statistics of `run` (definitions at each field of RunStats).
@@ -222,6 +250,23 @@ inline RunStats statsOf(const Run& run) {
     const auto found = run.work.find(key);
     return found == run.work.end() ? -1.0 : found->second;
   };
+  const auto total = [&](const char* name, bool mean) {
+    if (!run.has(name)) return -1.0;
+    double sum = 0;
+    for (double v : run.at(name)) sum += v;
+    return mean ? sum / double(s.frames) : sum;
+  };
+  const auto most = [&](const char* name) {
+    return run.has(name) ? *std::max_element(run.at(name).begin(), run.at(name).end()) : -1.0;
+  };
+  s.contactsSeconds = total("contacts_s", false);
+  s.contactPoints = total("contact_points", true);
+  s.contactPointsMax = most("contact_points");
+  s.contactGroups = total("contact_groups", true);
+  s.contactSweeps = total("contact_sweeps", true);
+  s.energyRises = total("energy_rises", false);
+  s.sleepingEnd = run.has("sleeping") ? run.at("sleeping").back() : -1.0;
+  s.sleepingMax = most("sleeping");
   s.completeTests = work("complete_tests");
   s.sdEvaluations = work("sd_evaluations");
   s.kdopNodes = work("kdop_nodes");
@@ -298,6 +343,30 @@ inline std::string statsTable(const std::vector<std::pair<std::string, Run>>& ru
       [](const RunStats& s) { return s.maxPenetration < 0 ? std::string("not checked") : format("%.3g m", s.maxPenetration); },
       none);
   row("pairs tunnelled", [](const RunStats& s) { return s.tunnelled < 0 ? std::string("not checked") : std::to_string(s.tunnelled); },
+      none);
+  // The hybrid contact model (docs 07, "Resting contact"), the paper's future work.
+  const std::string future = "future work (§6)";
+  row("contact solver wall time, s (of the method's)",
+      [&](const RunStats& s) { return s.contactsSeconds < 0 ? std::string("not recorded") : format("%.2f", s.contactsSeconds); },
+      future);
+  row("contact points solved per frame: mean (most)",
+      [&](const RunStats& s) {
+        return s.contactPoints < 0 ? std::string("not recorded")
+                                   : format("%.4g", s.contactPoints) + format(" (%.0f)", s.contactPointsMax);
+      },
+      future);
+  row("contact groups solved per frame: mean",
+      [&](const RunStats& s) { return s.contactGroups < 0 ? std::string("not recorded") : format("%.3g", s.contactGroups); },
+      future);
+  row("sequential-impulse sweeps per frame: mean",
+      [&](const RunStats& s) { return s.contactSweeps < 0 ? std::string("not recorded") : format("%.3g", s.contactSweeps); },
+      future);
+  row("contact solves whose kinetic energy rose", [&](const RunStats& s) { return count(s.energyRises); }, future);
+  row("bodies asleep at the end (most at a frame's end)",
+      [&](const RunStats& s) {
+        return s.sleepingEnd < 0 ? std::string("not recorded")
+                                 : format("%.0f", s.sleepingEnd) + format(" (%.0f)", s.sleepingMax);
+      },
       none);
   md << "\nRuns:\n\n";
   for (const auto& run : runs)

@@ -1,5 +1,6 @@
 # Fig. 6 of the paper, "Running Time for Torso-Plant Simulation", drawn by gnuplot for
-# 08_torso (chapter 08, main.cpp runningTimeFigure): per frame, the method's execution time
+# 08_torso (chapter 08, main.cpp runningTimeFigure), and its companion of the run under the
+# hybrid contact model on the same axes: per frame, the method's execution time
 # over the frame's simulated time, stacked by part, against simulated time; the real-time
 # line y = 1 and the paper's range for comparison. When the frames and the paper's range
 # span more than a factor 30 (twoPanels = 1), a stack on a log axis would misstate the
@@ -18,7 +19,7 @@
 #   xmax         the simulated time at the run's end
 #   twoPanels    1 or 0, as above; with two panels: bottom and top, the log axis's range, and
 #   stackTop     the linear axis's top; with one panel: stackTop, its axis's top
-colours = "#4e79a7 #59a14f #e15759 #f28e2b #b07aa1"  # the parts' colours, bottom to top
+colours = "#4e79a7 #59a14f #e15759 #f28e2b #b07aa1 #76b7b2"  # the parts' colours, bottom to top (the last: the hybrid's contact solver)
 total = parts + 1  # the column of the top of the stack
 
 # 1200 pixels wide, or 12.5 inches (pdfcairo's unit) at 96 pixels an inch.

@@ -27,31 +27,7 @@ Result run(const std::string& arguments) { return test::runProgram(GJKX_BULLET_S
 
 fs::path freshFolder(const std::string& name) { return test::freshFolder("gjkx-bullet", name); }
 
-// The key=value pairs of the SUMMARY line of `output` (empty if there is none).
-std::map<std::string, double> summary(const std::string& output) {
-  std::map<std::string, double> keys;
-  const auto at = output.find("SUMMARY ");
-  if (at == std::string::npos) return keys;
-  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
-  for (std::string item; line >> item;) {
-    const auto eq = item.find('=');
-    if (eq != std::string::npos) keys[item.substr(0, eq)] = std::stod(item.substr(eq + 1));
-  }
-  return keys;
-}
-
-// The rows of a CSV file (the header first), split at commas.
-std::vector<std::vector<std::string>> readCsv(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream cellsIn(line);
-    for (std::string cell; std::getline(cellsIn, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
+using test::readCsv;
 
 }  // namespace
 
@@ -60,7 +36,7 @@ TEST_CASE("a ball dropped in Bullet rebounds, measured by the simulator's checks
   const Result r = run("\"" + std::string(GJKX_SCENES) + "/ball_drop.json\" --out \"" + out.string() + "\" --quiet");
   INFO(r.output);
   REQUIRE(r.status == 0);
-  const auto keys = summary(r.output);
+  const auto keys = test::summaryKeys(r.output);
   for (const char* key : {"frames", "sim_s", "wall_s", "steps", "max_penetration", "tunnelled", "kinetic_start",
                           "kinetic_end", "kinetic_max"})
     REQUIRE(keys.count(key) == 1);
@@ -120,7 +96,7 @@ TEST_CASE("the tunnelling check catches Bullet passing a thin plate without CCD"
   const Result r = run("\"" + (out / "shot.json").string() + "\" --out \"" + out.string() + "\" --substeps 1 --no-ccd --quiet");
   INFO(r.output);
   REQUIRE(r.status == 0);
-  const auto keys = summary(r.output);
+  const auto keys = test::summaryKeys(r.output);
   REQUIRE(keys.count("tunnelled") == 1);
   CHECK(keys.at("tunnelled") == 1);
   // It went through: the shot ends below the plate, never stopped.

@@ -1,0 +1,240 @@
+// gjkx_peers_table: the simulators a user would otherwise pick, side by side with ours on
+// the same scene files (docs/08_torso.md, "The peers side by side"): gjkx_simulate under
+// the hybrid contact model with the independent checks on, gjkx_bullet_scene,
+// gjkx_mujoco_scene and gjkx_ode_scene (those that were built), one run each, measured by
+// the same checks (gjkx::FrameVerifier), written as one markdown table.
+//
+//   gjkx_peers_table NAME=SCENE.json ... [--duration S] [--work DIR] [--bin DIR] --table OUT.md
+//
+// For each scene and simulator it runs `PROGRAM SCENE --out WORK/NAME-PROGRAM --quiet`
+// (gjkx_simulate with `--contact hybrid --checks`; a scene longer than --duration is cut
+// to it with each program's --duration), one after the other, and reads the SUMMARY line,
+// frames.csv and bodies.csv. The columns:
+// - wall time per simulated second: the simulator's own wall time (gjkx_simulate's frames
+//   less their checks_s; a peer's wall_s, which leaves its checks out);
+// - deepest penetration at any frame's end and pairs tunnelled: the SUMMARY's, by the checks;
+// - energy drift: the bodies' total mechanical energy (kinetic, from bodies.csv, plus
+//   gravity's potential -m g.c of each centre of mass c, the masses our world gives the
+//   bodies) at the last frame less at the start, and its largest rise above the start
+//   over the frames: a resting pile loses energy where contacts absorb its fall; a rise is
+//   energy the simulator made.
+// A program that fails is a row saying so, with its exit status. A bad command line exits 2,
+// a scene that cannot be read 1.
+#include "../command_line.hpp"
+#include "../formatting.hpp"
+#include "peer_run.hpp"
+
+#include <gjkx/timewarp/body.hpp>
+#include <gjkx/timewarp/scene.hpp>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// One simulator's run of one scene, as the table reports it.
+struct Row {
+  std::string scene, simulator, command;
+  int status = 0;                        ///< the program's exit status
+  double simulated = 0, wall = 0;        ///< simulated seconds; the simulator's wall seconds
+  double penetration = 0;                ///< deepest penetration at a frame's end (m)
+  long tunnelled = 0;                    ///< pairs tunnelled
+  double energyDrift = 0, energyRise = 0;  ///< J: end less start; largest rise above the start
+};
+
+/// Runs a shell command; its standard output, and its exit status in `status`.
+std::string runCommand(const std::string& command, int& status) {
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) {
+    status = -1;
+    return output;
+  }
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int raw = pclose(pipe);
+  status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return output;
+}
+
+/// The key=value pairs of the SUMMARY line of `output`.
+std::map<std::string, double> summaryOf(const std::string& output) {
+  std::map<std::string, double> keys;
+  const auto at = output.find("SUMMARY ");
+  if (at == std::string::npos) return keys;
+  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
+  for (std::string item; line >> item;)
+    if (const auto eq = item.find('='); eq != std::string::npos) keys[item.substr(0, eq)] = std::stod(item.substr(eq + 1));
+  return keys;
+}
+
+/// Sum of a column of a CSV file with a header.
+double columnSum(const std::string& path, const std::string& name) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = chapter::csvFields(line);
+  const auto column = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+  if (column == names.size()) throw std::runtime_error(path + ": no column '" + name + "'");
+  double sum = 0;
+  while (std::getline(in, line))
+    if (!line.empty()) sum += std::stod(chapter::csvFields(line).at(column));
+  return sum;
+}
+
+/// A body's mechanical energy: kinetic plus gravity's potential of its centre of mass.
+double potential(const gjkx::WorldBody& body, const Eigen::Vector3d& centre, const Eigen::Vector3d& gravity) {
+  return body.rigid.isStatic() ? 0.0 : -body.rigid.massProperties().mass * gravity.dot(centre);
+}
+
+/// The energy drift of a run (see the file's head) from its bodies.csv: {end - start, largest rise}.
+std::pair<double, double> energyDrift(const peer_run::PeerScene& scene, const std::string& bodiesCsv) {
+  std::map<std::string, std::size_t> index;
+  double start = 0;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    index[scene.bodies[b].name] = b;
+    const gjkx::BodyState s = scene.bodies[b].path.stateAt(0.0);
+    if (!scene.bodies[b].rigid.isStatic())
+      start += scene.bodies[b].rigid.kineticEnergy(s) + potential(scene.bodies[b], s.worldFromBody.translation, scene.scene.gravity);
+  }
+  std::ifstream in(bodiesCsv);
+  if (!in) throw std::runtime_error(bodiesCsv + ": cannot read");
+  std::string line;
+  std::getline(in, line);  // frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy
+  std::map<int, double> energy;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = chapter::csvFields(line);
+    if (f.size() < 17) throw std::runtime_error(bodiesCsv + ": a row of " + std::to_string(f.size()) + " cells");
+    const auto found = index.find(f[2]);
+    if (found == index.end()) throw std::runtime_error(bodiesCsv + ": no body '" + f[2] + "' in the scene");
+    const gjkx::WorldBody& body = scene.bodies[found->second];
+    if (body.rigid.isStatic()) continue;
+    const Eigen::Vector3d x(std::stod(f[3]), std::stod(f[4]), std::stod(f[5]));
+    const Eigen::Quaterniond q(std::stod(f[6]), std::stod(f[7]), std::stod(f[8]), std::stod(f[9]));
+    const Eigen::Vector3d centre = x - q.normalized().toRotationMatrix() * body.frameOrigin;
+    energy[std::stoi(f[0])] += std::stod(f[16]) + potential(body, centre, scene.scene.gravity);
+  }
+  if (energy.empty()) throw std::runtime_error(bodiesCsv + ": no frames");
+  double rise = 0;
+  for (const auto& frame : energy) rise = std::max(rise, frame.second - start);
+  return {energy.rbegin()->second - start, rise};
+}
+
+/// The table (see the file's head).
+std::string table(const std::vector<Row>& rows, double duration, const std::string& command) {
+  using chapter::format;
+  std::ostringstream md;
+  md << "| scene | simulator | simulated | wall time per simulated second | deepest penetration | pairs tunnelled "
+        "| energy drift, end − start (largest rise) |\n| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const Row& r : rows) {
+    md << "| " << r.scene << " | " << r.simulator << " | ";
+    if (r.status != 0) {
+      md << "failed (exit status " << r.status << ") | | | | |\n";
+      continue;
+    }
+    md << format("%.3g s", r.simulated) << " | " << format("%.3g s", r.wall / r.simulated) << " | "
+       << format("%.3g mm", 1000 * r.penetration) << " | " << r.tunnelled << " | "
+       << format("%.4g J", r.energyDrift) << format(" (%.3g J)", r.energyRise) << " |\n";
+  }
+  md << "\nOne run each, one after the other, on one core of a shared 2-core machine";
+  if (duration > 0) md << format("; scenes longer than %g s cut to it", duration);
+  md << ". Runs:\n\n";
+  for (const Row& r : rows) md << "- `" << r.command << "`\n";
+  md << "\nMade by `" << command << "`.\n";
+  return md.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Runs gjkx (hybrid contact), Bullet, MuJoCo and ODE on the same scene files and writes one table of "
+               "wall time, penetration, tunnelling and energy drift by the same independent checks.",
+               "gjkx_peers_table"};
+  std::vector<std::string> scenes;
+  std::string work = "peers-runs", bin, tableOut;
+  double duration = 0;
+  app.add_option("scenes", scenes, "NAME=SCENE.json, one per scene (a row per simulator)")->required();
+  app.add_option("--duration", duration, "cut every scene longer than this (s)")->check(CLI::PositiveNumber);
+  app.add_option("--work", work, "folder for the runs (one folder each)")->capture_default_str();
+  app.add_option("--bin", bin, "folder of the programs (default: this program's)");
+  app.add_option("--table", tableOut, "the markdown table to write")->required();
+  chapter::parseOrExit(app, argc, argv);
+  if (bin.empty()) bin = std::filesystem::canonical("/proc/self/exe").parent_path().string();
+
+  std::string command = "gjkx_peers_table";
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    command += " " + (a.find(' ') == std::string::npos ? a : "\"" + a + "\"");
+  }
+  // The simulators, each where it was built: the program, its extra options, its name.
+  struct Simulator {
+    std::string program, options, name;
+  };
+  std::vector<Simulator> simulators = {{"gjkx_simulate", " --contact hybrid --checks", "gjkx (hybrid)"},
+                                       {"gjkx_bullet_scene", "", "Bullet"},
+                                       {"gjkx_mujoco_scene", "", "MuJoCo"},
+                                       {"gjkx_ode_scene", "", "ODE"}};
+  std::vector<Row> rows;
+  for (const std::string& item : scenes) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::cerr << "gjkx_peers_table: scenes: '" << item << "' is not NAME=SCENE.json\n";
+      return 2;
+    }
+    const std::string name = item.substr(0, eq), path = item.substr(eq + 1);
+    peer_run::PeerScene scene;  // for the bodies' masses (and the checks, unused here)
+    bool cut = false;
+    try {
+      cut = duration > 0 && gjkx::loadScene(path).duration > duration;
+      scene = peer_run::loadPeerScene(path, cut ? duration : 0);
+    } catch (const std::exception& e) {
+      std::cerr << "gjkx_peers_table: " << name << ": " << e.what() << "\n";
+      return 1;
+    }
+    for (const Simulator& sim : simulators) {
+      const std::string program = bin + "/" + sim.program;
+      if (!std::filesystem::exists(program)) continue;
+      const std::string out = work + "/" + name + "-" + sim.program;
+      Row row;
+      row.scene = name;
+      row.simulator = sim.name;
+      row.command = sim.program + " " + path + sim.options + (cut ? chapter::format(" --duration %g", duration) : "") +
+                    " --out " + out + " --quiet";
+      std::cerr << "gjkx_peers_table: " << row.command << "\n";
+      const std::string output = runCommand(bin + "/" + row.command, row.status);
+      const auto summary = summaryOf(output);
+      if (row.status == 0 && summary.count("wall_s") && summary.count("sim_s")) {
+        try {
+          row.simulated = summary.at("sim_s");
+          row.wall = sim.program == "gjkx_simulate" ? summary.at("wall_s") - columnSum(out + "/frames.csv", "checks_s")
+                                                    : summary.at("wall_s");
+          row.penetration = summary.at("max_penetration");
+          row.tunnelled = long(summary.at("tunnelled"));
+          std::tie(row.energyDrift, row.energyRise) = energyDrift(scene, out + "/bodies.csv");
+        } catch (const std::exception& e) {
+          std::cerr << "gjkx_peers_table: " << row.command << ": " << e.what() << "\n";
+          row.status = -1;
+        }
+      } else if (row.status == 0) {
+        row.status = -1;  // no SUMMARY line
+      }
+      rows.push_back(row);
+    }
+  }
+  std::ofstream file(tableOut);
+  if (!(file << table(rows, duration, command))) {
+    std::cerr << "gjkx_peers_table: cannot write " << tableOut << "\n";
+    return 1;
+  }
+  return 0;
+}

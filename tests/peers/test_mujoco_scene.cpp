@@ -1,0 +1,91 @@
+// gjkx_mujoco_scene as a user runs it (docs/08_torso.md, "The peers side by side"): a box
+// dropped onto a floor in MuJoCo comes to rest on it, measured by the same independent
+// checks as gjkx_simulate (penetration within a bound, nothing tunnelled), with the CSV
+// columns and SUMMARY keys of gjkx_bullet_scene; a bad command line exits 2, a bad scene 1.
+#include <catch2/catch.hpp>
+
+#include "../run_program.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+test::ProgramResult run(const std::string& arguments) { return test::runProgram(GJKX_MUJOCO_SCENE, arguments); }
+
+using test::readCsv;
+
+// A 0.2 m box (turned 30 degrees about z, so that MuJoCo's body frame is not the world's)
+// dropped from 0.5 m above a static floor whose top is at z = 0.
+const char* kBoxDrop = R"({ "gravity": [0, 0, -9.81], "frame_rate": 24, "duration": 2.0, "friction": 0.5,
+  "bodies": [
+    { "name": "floor", "shape": {"box": [2, 2, 0.5]}, "position": [0, 0, -0.5], "static": true },
+    { "name": "box", "shape": {"box": [0.1, 0.1, 0.1]}, "position": [0, 0, 0.6],
+      "orientation": [0.9659258, 0, 0, 0.2588190] } ] })";
+
+}  // namespace
+
+TEST_CASE("a box dropped in MuJoCo comes to rest on the floor, measured by the simulator's checks", "[peers]") {
+  const fs::path out = test::freshFolder("gjkx-mujoco", "box");
+  std::ofstream(out / "box.json") << kBoxDrop;
+  const test::ProgramResult r = run("\"" + (out / "box.json").string() + "\" --out \"" + out.string() + "\" --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const auto keys = test::summaryKeys(r.output);
+  for (const char* key : {"frames", "sim_s", "wall_s", "steps", "max_penetration", "tunnelled", "kinetic_start",
+                          "kinetic_end", "kinetic_max"})
+    REQUIRE(keys.count(key) == 1);
+  CHECK(keys.at("frames") == 48);
+  CHECK(keys.at("steps") == 48 * 21);  // at most MuJoCo's default 2 ms a step
+  CHECK(keys.at("tunnelled") == 0);
+  // MuJoCo's contacts are soft: the box sinks into the floor as it lands (3 m/s), then
+  // comes back up to rest with a small overlap.
+  CHECK(keys.at("max_penetration") >= 0);
+  CHECK(keys.at("max_penetration") < 0.05);  // half the box's half size at the landing
+  CHECK(keys.at("kinetic_end") < 1e-3 * keys.at("kinetic_max"));
+
+  const auto frames = readCsv(out / "frames.csv");
+  REQUIRE(frames.size() == 49);
+  CHECK(frames[0] == std::vector<std::string>{"frame", "time", "wall_s", "max_penetration", "kinetic_energy",
+                                              "contact_pairs", "tunnelled", "checks_s"});
+  CHECK(frames.back()[5] == "1");                   // at rest on the floor: one pair in contact
+  CHECK(std::stod(frames.back()[3]) < 0.0005);       // resting within half a millimetre
+  const auto bodies = readCsv(out / "bodies.csv");
+  REQUIRE(bodies.size() == 1 + 48 * 2);
+  CHECK(bodies[0] == std::vector<std::string>{"frame", "time", "name", "x", "y", "z", "qw", "qx", "qy", "qz", "vx",
+                                              "vy", "vz", "wx", "wy", "wz", "kinetic_energy"});
+  // The last row is the box at the end: on the floor (its centre half its size above the
+  // floor's top, within the penetration bound), where it fell, still turned 30 degrees.
+  const auto& box = bodies.back();
+  REQUIRE(box[2] == "box");
+  CHECK(std::abs(std::stod(box[3])) < 1e-3);
+  CHECK(std::abs(std::stod(box[4])) < 1e-3);
+  CHECK(std::stod(box[5]) == Approx(0.1).margin(0.0005));
+  CHECK(std::abs(std::stod(box[6])) == Approx(0.9659258).margin(1e-3));
+  for (int v = 10; v <= 15; ++v) CHECK(std::abs(std::stod(box[std::size_t(v)])) < 0.01);
+  CHECK(fs::exists(out / "model.xml"));
+}
+
+TEST_CASE("gjkx_mujoco_scene refuses a bad command line (2) and a bad scene (1)", "[peers]") {
+  const fs::path out = test::freshFolder("gjkx-mujoco", "bad");
+  std::ofstream(out / "box.json") << kBoxDrop;
+  const std::string box = "\"" + (out / "box.json").string() + "\" --out \"" + out.string() + "\"";
+  CHECK(run("").status == 2);                          // no scene
+  CHECK(run(box + " --substeps 0").status == 2);       // out of range
+  CHECK(run(box + " --duration -1").status == 2);      // not positive
+  CHECK(run(box + " --no-such-option").status == 2);   // unknown
+  const test::ProgramResult missing = run("/nonexistent/scene.json");
+  CHECK(missing.status == 1);
+  CHECK(missing.output.find("/nonexistent/scene.json") != std::string::npos);
+  std::ofstream(out / "bad.json") << R"({ "duration": 1, "bodies": [ { "name": "b", "shape": {"sphere": -1}, "position": [0, 0, 0] } ] })";
+  const test::ProgramResult bad = run("\"" + (out / "bad.json").string() + "\" --out \"" + out.string() + "\"");
+  CHECK(bad.status == 1);
+  CHECK(bad.output.find("shape.sphere") != std::string::npos);
+}
