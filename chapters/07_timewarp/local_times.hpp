@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -66,14 +67,14 @@ struct Story {
   long checks = 0;
 };
 
-std::string ms(double seconds) {
+inline std::string ms(double seconds) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f ms", 1000 * seconds);
   return text;
 }
 
 /// The names of `bodies` as "a, b and c".
-std::string names(const Replay& replay, const std::vector<int>& bodies) {
+inline std::string names(const Replay& replay, const std::vector<int>& bodies) {
   std::string text;
   for (std::size_t k = 0; k < bodies.size(); ++k)
     text += (k == 0 ? "" : k + 1 == bodies.size() ? " and " : ", ") + replay.names[std::size_t(bodies[k])];
@@ -94,6 +95,7 @@ inline void animateTimewarp(const gjkx::Scene& scene, const std::vector<BodyLook
   std::vector<int> moving;
   for (std::size_t b = 0; b < n; ++b)
     if (!replay.isStatic[b]) moving.push_back(int(b));
+  if (moving.empty()) throw std::runtime_error(scene.source + ": no moving body: Timewarp has nothing to show");
 
   // A body's shape frame at a state (bodies.csv's pose).
   const auto poseOf = [&](std::size_t b, const gjkx::BodyState& s) {
@@ -118,7 +120,7 @@ inline void animateTimewarp(const gjkx::Scene& scene, const std::vector<BodyLook
   // The layout: a caption, the bodies, the rows of local times.
   const int W = width, H = height;
   const double chartTop = 0.50 * H, rowH = std::min(34.0, (H - chartTop - 70) / std::max<std::size_t>(1, moving.size()));
-  const double x0 = 90, x1 = W - 30;
+  const double x0 = 90, x1 = W - 70;
   const auto X = [&](double t) { return x0 + (x1 - x0) * t / tEnd; };
   const auto rowY = [&](std::size_t k) { return chartTop + 28 + rowH * (double(k) + 0.6); };
   const auto at = [&](double x, double y) { return P2(x, H - y); };  // pixels, y down, in the full-canvas window
@@ -183,22 +185,20 @@ inline void animateTimewarp(const gjkx::Scene& scene, const std::vector<BodyLook
       c.point(at(X(story.local[b]), y), palette::ink, 3.5);
     }
     for (const auto& [t, pair] : story.collisions) {
-      std::size_t ki = 0, kj = 0;
-      for (std::size_t k = 0; k < moving.size(); ++k) {
-        if (moving[k] == pair.first) ki = k;
-        if (moving[k] == pair.second) kj = k;
-      }
-      const bool staticOther = replay.isStatic[std::size_t(pair.second)] || replay.isStatic[std::size_t(pair.first)];
-      if (!staticOther) c.line(at(X(t), rowY(ki)), at(X(t), rowY(kj)), Stroke{kCollision, 2.0});
-      for (std::size_t k : {ki, kj}) c.point(at(X(t), rowY(k)), kCollision, 4.5, Stroke{palette::background, 1.2});
+      std::vector<double> ys;  // the rows of the pair's moving bodies
+      for (std::size_t k = 0; k < moving.size(); ++k)
+        if (moving[k] == pair.first || moving[k] == pair.second) ys.push_back(rowY(k));
+      if (ys.size() == 2) c.line(at(X(t), ys[0]), at(X(t), ys[1]), Stroke{kCollision, 2.0});
+      for (double y : ys) c.point(at(X(t), y), kCollision, 4.5, Stroke{palette::background, 1.2});
     }
     // The global virtual time, and the time axis.
     c.line(at(X(gvt), top - 4), at(X(gvt), bottom + 4), Stroke{kGvt, 2.0});
     c.text(at(X(gvt), bottom + 4), "GVT " + ms(gvt), TextStyle{Font::SansBold, 12, kGvt, 2.0}, Anchor::Below);
     const double yAxis = bottom + 22;
     c.line(at(x0, yAxis), at(x1, yAxis), style::axisStroke);
-    c.text(at(x1, yAxis), "simulated time", grey, Anchor::BelowLeft);
+    c.text(at(0.5 * (x0 + x1), yAxis), "simulated time", grey, Anchor::Below, P2(0, -14));
     c.text(at(x0, yAxis), "0", grey, Anchor::Below);
+    for (const ReplayFrame& f : replay.frames) c.text(at(X(f.T1), yAxis), ms(f.T1), grey, Anchor::Below);
     c.text(at(x0, H - 8), "pair checks so far: " + std::to_string(story.checks) +
                               "    blue: flown from the frame's start   orange: re-flown from a collision   grey: discarded by a rollback   green: global virtual time",
            grey, Anchor::AboveRight, P2(-80, 0));
