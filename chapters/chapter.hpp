@@ -105,6 +105,12 @@ inline gjkx::Pose<double> planarPose(const std::vector<double>& xyAngle) {
                                            gjkx::Vector3<double>(xyAngle.at(0), xyAngle.at(1), 0));
 }
 
+/// Declares the option `name`, a pose of the plane "X,Y[,ANGLE]" (read with planarPose()),
+/// into `text` (its default shown in the help); a bad value is refused naming the option.
+inline CLI::Option* addPoseOption(CLI::App& app, const std::string& name, std::string& text, const std::string& what) {
+  return app.add_option(name, text, what)->check(numbers(2, 3, "X,Y[,ANGLE]"))->capture_default_str();
+}
+
 /// A trace printed as a table on standard output (--trace): its title, then the header and
 /// one row per step, each column padded to its widest cell.
 struct TraceTable {

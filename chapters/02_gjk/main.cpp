@@ -231,12 +231,8 @@ int main(int argc, char** argv) {
   auto* pOption = app.add_option("--p", pText, "the shape P: box:W,H, ngon:R,N or polygon:X1,Y1,X2,Y2,... "
                                                "(default: Fig. 2's quadrilateral)");
   auto* qOption = app.add_option("--q", qText, "the shape Q, as --p (default: Fig. 2's pentagon)");
-  auto* pAtOption = app.add_option("--p-at", pAt, "P's pose: where its origin goes, and its angle (radians)")
-                        ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
-                        ->capture_default_str();
-  auto* qAtOption = app.add_option("--q-at", qAt, "Q's pose, as --p-at")
-                        ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
-                        ->capture_default_str();
+  auto* pAtOption = chapter::addPoseOption(app, "--p-at", pAt, "P's pose: where its origin goes, its angle (radians)");
+  auto* qAtOption = chapter::addPoseOption(app, "--q-at", qAt, "Q's pose, as --p-at");
   auto* s0Option = app.add_option("--s0", s0Text, "s_0, GJK's first search direction (§2.2: \"an arbitrary nonzero "
                                                   "vector\")")
                        ->check(chapter::numbers(2, 2, "X,Y"))

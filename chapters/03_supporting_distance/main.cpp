@@ -171,12 +171,9 @@ int main(int argc, char** argv) {
                "turn s_a and s_b; --trace prints the directions drawn (docs/traces.md)."};
   chapter::addFigureOptions(app, out);
   chapter::addTraceOption(app, trace);
-  app.add_option("--q-apart", apartText, "Q's pose in panels (a)-(d): where its origin goes, its angle (radians)")
-      ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
-      ->capture_default_str();
-  app.add_option("--q-inside", insideText, "Q's pose in panels (e)-(f), as --q-apart")
-      ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
-      ->capture_default_str();
+  chapter::addPoseOption(app, "--q-apart", apartText,
+                         "Q's pose in panels (a)-(d): where its origin goes, its angle (radians)");
+  chapter::addPoseOption(app, "--q-inside", insideText, "Q's pose in panels (e)-(f), as --q-apart");
   app.add_option("--angle-a", separatingAngle, "the angle of s_a (radians)")
       ->check(CLI::Range(-100.0, 100.0))
       ->capture_default_str();

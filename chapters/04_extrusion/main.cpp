@@ -218,8 +218,7 @@ int main(int argc, char** argv) {
     query.push_back(app.add_option(name, *text, what)->check(chapter::numbers(2, 2, "W,H"))->capture_default_str());
   for (auto [name, text, what] : {std::tuple{"--p-start", &pStart, "P's pose at t_0: its centre and angle (radians)"},
                                   std::tuple{"--q-start", &qStart, "Q's pose at t_0"}})
-    query.push_back(
-        app.add_option(name, *text, what)->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))->capture_default_str());
+    query.push_back(chapter::addPoseOption(app, name, *text, what));
   for (auto [name, text, what] : {std::tuple{"--p-velocity", &pVelocity, "P's velocity over [t_0, t_1] = [0, 1]"},
                                   std::tuple{"--q-velocity", &qVelocity, "Q's velocity"}})
     query.push_back(app.add_option(name, *text, what)->check(chapter::numbers(2, 2, "VX,VY"))->capture_default_str());

@@ -70,9 +70,7 @@ int main(int argc, char** argv) {
                  "wrote it (paper: ToiSettings::paper())")
       ->check(CLI::IsMember({"paper", "gjkx"}))
       ->capture_default_str();
-  auto* startOption = app.add_option("--q-start", start, "the box Q's pose at t_0: its centre and angle (radians)")
-                          ->check(chapter::numbers(2, 3, "X,Y[,ANGLE]"))
-                          ->capture_default_str();
+  auto* startOption = chapter::addPoseOption(app, "--q-start", start, "the box Q's pose at t_0: its centre and angle (radians)");
   auto* velocityOption = app.add_option("--q-velocity", velocity, "Q's velocity over [0, 1]")
                              ->check(chapter::numbers(2, 2, "VX,VY"))
                              ->capture_default_str();

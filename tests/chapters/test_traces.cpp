@@ -55,6 +55,16 @@ test::ProgramResult run(const std::string& program, const std::string& name, con
   return result;
 }
 
+/// Runs `program` with `arguments` (a bad value) and checks that it is refused with exit
+/// status 2 and a message naming `option`.
+void checkRefused(const std::string& program, const std::string& arguments, const std::string& option) {
+  const auto result =
+      test::runProgram(program, "--out " + test::freshFolder("gjkx-traces", "bad").string() + " " + arguments);
+  INFO(arguments << "\n" << result.output);
+  CHECK(result.status == 2);
+  CHECK(result.output.find(option) != std::string::npos);
+}
+
 }  // namespace
 
 TEST_CASE("02_gjk --trace prints Fig. 2's run step by step", "[chapters][trace][gjk]") {
@@ -96,13 +106,8 @@ TEST_CASE("02_gjk --trace on a query of one's own", "[chapters][trace][gjk]") {
 TEST_CASE("02_gjk names a bad option", "[chapters][trace][gjk]") {
   for (const auto& [arguments, option] :
        {std::pair<std::string, std::string>{"--s0 0,0", "--s0"}, {"--p blob:1", "--p"}, {"--q box:1", "--q"},
-        {"--q-at 1", "--q-at"}, {"--p polygon:0,0,1,1,2,2", "--p"}}) {
-    const auto result = test::runProgram(GJKX_CHAPTER_02, "--out " + test::freshFolder("gjkx-traces", "bad").string() +
-                                                              " " + arguments);
-    INFO(arguments << "\n" << result.output);
-    CHECK(result.status == 2);
-    CHECK(result.output.find(option) != std::string::npos);
-  }
+        {"--q-at 1", "--q-at"}, {"--p polygon:0,0,1,1,2,2", "--p"}})
+    checkRefused(GJKX_CHAPTER_02, arguments, option);
 }
 
 TEST_CASE("05_brent --trace: Brent's iterates stay in their brackets, and §5 as written takes only Brent's steps",
@@ -141,13 +146,8 @@ TEST_CASE("05_brent --trace: Brent's iterates stay in their brackets, and §5 as
 
 TEST_CASE("05_brent names a bad option", "[chapters][trace][brent]") {
   for (const auto& [arguments, option] : {std::pair<std::string, std::string>{"--q-size 0,1", "--q-size"},
-                                          {"--q-start x,1", "--q-start"}, {"--tolerance -1", "--tolerance"}}) {
-    const auto result = test::runProgram(GJKX_CHAPTER_05, "--out " + test::freshFolder("gjkx-traces", "bad").string() +
-                                                              " " + arguments);
-    INFO(arguments << "\n" << result.output);
-    CHECK(result.status == 2);
-    CHECK(result.output.find(option) != std::string::npos);
-  }
+                                          {"--q-start x,1", "--q-start"}, {"--tolerance -1", "--tolerance"}})
+    checkRefused(GJKX_CHAPTER_05, arguments, option);
 }
 
 TEST_CASE("07_timewarp --trace: the cradle event by event", "[chapters][trace][timewarp]") {
@@ -205,9 +205,6 @@ TEST_CASE("07_timewarp --trace on a scene of one's own", "[chapters][trace][time
   REQUIRE(!rows.empty());
   for (const Row& row : rows) CHECK((row[1] == "1" || row[1] == "2"));
   CHECK(rows.back()[1] == "2");
-  const auto bad = test::runProgram(GJKX_CHAPTER_07, "--out " + test::freshFolder("gjkx-traces", "bad").string() +
-                                                         " --scene /nonexistent/scene.json");
-  INFO(bad.output);
-  CHECK(bad.status == 2);
-  CHECK(bad.output.find("--scene") != std::string::npos);
+  checkRefused(GJKX_CHAPTER_07, "--scene /nonexistent/scene.json", "--scene");
+  checkRefused(GJKX_CHAPTER_07, "--frames 0", "--frames");
 }
