@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
   app.add_option("--hold", hold, "milliseconds the last frame is held before the animation loops")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--azimuth", azimuth, "3d: the camera's angle about z from the x axis (degrees)")->capture_default_str();
-  app.add_option("--elevation", elevation, "3d: the camera's angle above the horizon (degrees, in (-90, 90))")
+  app.add_option("--azimuth", azimuth, "3d and spacetime: the camera's angle about z from the x axis (degrees)")->capture_default_str();
+  app.add_option("--elevation", elevation, "3d and spacetime: the camera's angle above the horizon (degrees, in (-90, 90))")
       ->check(CLI::Range(-89.0, 89.0))
       ->capture_default_str();
   app.add_option("--zoom", zoom, "> 1 comes closer to the framed bodies")->check(CLI::PositiveNumber)->capture_default_str();
