@@ -105,6 +105,41 @@ TEST_CASE("08_torso --stats works out the paper's statistics from a run's frames
   CHECK(row(md, "rollbacks").at(0) == "4");
   CHECK(row(md, "deepest penetration at a frame's end").at(0) == "0.002 m");
   CHECK(row(md, "pairs tunnelled").at(0) == "0");
+  // A frames.csv without the hybrid contact model's columns: its rows say so.
+  CHECK(row(md, "contact points solved per frame: mean (most)") == std::vector<std::string>{"not recorded", "future work (§6)"});
+  CHECK(row(md, "bodies asleep at the end (most at a frame's end)").at(0) == "not recorded");
+  fs::remove_all(run);
+}
+
+TEST_CASE("08_torso --stats adds the contact solver to the method's time and tabulates the hybrid's columns",
+          "[torso][stats]") {
+  // The same frames with the hybrid's columns at the end: the contact solver took 0.25 s in
+  // frame 1 (its ratio 2 instead of 1: min 0.5, median (2 + 2) / 2 = 2, max 4), 8 + 4 + 0 + 0
+  // contact points (mean 3, most 8) in 2 + 1 + 0 + 0 groups (mean 0.75), 6 + 2 sweeps (mean 2),
+  // no energy rise, 0, 1, 3 and 2 bodies asleep (2 at the end, 3 at most).
+  std::string csv = std::string(header);
+  csv.insert(csv.size() - 1, ",contact_points,contact_groups,contact_sweeps,energy_rises,sleeping,contacts_s");
+  const char* extra[] = {",8,2,6,0,0,0.25", ",4,1,2,0,1,0", ",0,0,0,0,3,0", ",0,0,0,0,2,0"};
+  std::stringstream lines(rows);
+  int k = 0;
+  for (std::string line; std::getline(lines, line); ++k) csv += line + extra[k] + "\n";
+  const fs::path run = runFolder("hybrid", csv);
+  const fs::path table = run / "table.md";
+  const Result r = stats("\"" + run.string() + "\" --table \"" + table.string() + "\"", run / "log.txt");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  std::ifstream in(table);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string md = s.str();
+  INFO(md);
+  CHECK(row(md, "execution / simulation time: median").at(0) == "2");
+  CHECK(row(md, "contact solver wall time, s (of the method's)").at(0) == "0.25");
+  CHECK(row(md, "contact points solved per frame: mean (most)").at(0) == "3 (8)");
+  CHECK(row(md, "contact groups solved per frame: mean").at(0) == "0.75");
+  CHECK(row(md, "sequential-impulse sweeps per frame: mean").at(0) == "2");
+  CHECK(row(md, "contact solves whose kinetic energy rose").at(0) == "0");
+  CHECK(row(md, "bodies asleep at the end (most at a frame's end)").at(0) == "2 (3)");
   fs::remove_all(run);
 }
 
