@@ -150,6 +150,32 @@ TEST_CASE("checks: the pruned search equals the least over all piece pairs, near
   CHECK(referenceSignedDistance(refA, pose, refA, pose) < 0);
 }
 
+TEST_CASE("checks: asked only below a floor, the search gives the distance below it and a bound above it") {
+  // The penetration check asks with enough = 0: an overlap must come out exact, a gap as a
+  // lower bound between 0 and the distance (a pile at rest is hundreds of such gaps).
+  std::mt19937 rng(13);
+  const Body bone = boneLike(rng), plant = plantLike(7);
+  const ReferenceBody boneRef = prepared(bone), plantRef = prepared(plant);
+  int overlapping = 0, apart = 0;
+  for (int k = 0; k < 18; ++k) {
+    const Pose<double> poseBone = randomPose(rng, {-0.2, -0.2, -0.05}, {0.2, 0.2, 0.3});
+    const double exact = referenceSignedDistance(boneRef, poseBone, plantRef, Pose<double>::identity());
+    for (const double enough : {0.0, 0.01}) {
+      const double bounded = referenceSignedDistance(boneRef, poseBone, plantRef, Pose<double>::identity(), enough);
+      CAPTURE(k, enough, exact, bounded);
+      if (exact < enough) {
+        CHECK(bounded == exact);
+      } else {
+        CHECK(bounded >= enough);
+        CHECK(bounded <= exact);
+      }
+    }
+    (exact < 0 ? overlapping : apart) += 1;
+  }
+  CHECK(overlapping >= 3);
+  CHECK(apart >= 3);
+}
+
 TEST_CASE("checks: a convex body against a convex body is their piece distance") {
   Body a, b;
   a.pieces = {Sphere<double>(0.5)};

@@ -433,6 +433,7 @@ bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double 
     }
     std::sort(frame.contactPairs.begin(), frame.contactPairs.end());
     frame.contactPairs.erase(std::unique(frame.contactPairs.begin(), frame.contactPairs.end()), frame.contactPairs.end());
+    frame.heldPairs.insert(frame.heldPairs.end(), frame.contactPairs.begin(), frame.contactPairs.end());
   }
   // Each group's bodies fly over the interval on the solved velocities, gravity off.
   for (const std::vector<int>& group : groups)

@@ -297,7 +297,7 @@ int ReferenceBody::build(int first, int count) {
 // The least signed distance over piece pairs
 
 double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA, const ReferenceBody& b,
-                               const Pose<double>& poseB) {
+                               const Pose<double>& poseB, double enough) {
   // The pieces of the body with fewer (the query) are searched against the other's tree,
   // in the tree body's frame; a pair is always measured as (a's piece, b's piece).
   const bool aQueries = a.pieceCount() <= b.pieceCount();
@@ -354,6 +354,9 @@ double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA
   while (!heap.empty()) {
     const Entry e = heap.top();
     if (e.bound > best + margin) break;  // no pair left can beat the least found
+    // Every pair left is at least e.bound - margin apart, and so is every pair measured:
+    // enough for a caller that asked only whether the distance is below `enough`.
+    if (enough > -kInfinity && best >= enough && e.bound - margin >= enough) return std::min(best, e.bound - margin);
     heap.pop();
     const double reach = query.pieces_[e.q].sphereRadius;
     if (e.stage == 0) {

@@ -57,6 +57,9 @@ struct FrameState {
   FrameReport report;                              ///< what the frame reports
   std::vector<std::vector<PathPiece>> paths;       ///< per body, the paths of this frame in order
   std::vector<std::pair<int, int>> collidedPairs;  ///< pairs with a collision reported this frame
+  /// Pairs the hybrid's contact solver held this frame, in any interval (i < j; may repeat):
+  /// to the independent checks they are pairs in contact, as a peer's contact points are.
+  std::vector<std::pair<int, int>> heldPairs;
   /// How a body was struck this frame (response.hpp: Zeno's wedge; sleep.hpp).
   struct Struck {
     int microcollisions = 0;              ///< its microcollisions

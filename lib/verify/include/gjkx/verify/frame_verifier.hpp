@@ -25,6 +25,7 @@
 #include <gjkx/verify/reference_body.hpp>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,8 +81,10 @@ class FrameVerifier {
   FrameVerdict check(int frame, double T0, double T1, const std::vector<std::vector<PathPiece>>& paths,
                      const std::function<bool(int, int)>& reported) const;
 
-  /// The signed distance of bodies i and j at the given poses (the reference's).
-  double signedDistance(int i, const Pose<double>& poseI, int j, const Pose<double>& poseJ) const;
+  /// The signed distance of bodies i and j at the given poses (the reference's), or, where
+  /// it is at least `enough`, a lower bound at least `enough` (referenceSignedDistance).
+  double signedDistance(int i, const Pose<double>& poseI, int j, const Pose<double>& poseJ,
+                        double enough = -std::numeric_limits<double>::infinity()) const;
 
   /// The bodies.
   const std::vector<VerifiedBody>& bodies() const { return bodies_; }

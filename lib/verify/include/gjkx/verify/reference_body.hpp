@@ -25,6 +25,7 @@
 #include <functional>
 #include <string>
 #include <optional>
+#include <limits>
 #include <vector>
 
 namespace gjkx {
@@ -82,7 +83,7 @@ class ReferenceBody {
   std::vector<Node> nodes_; // nodes_[0] is the root
 
   friend double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA, const ReferenceBody& b,
-                                        const Pose<double>& poseB);
+                                        const Pose<double>& poseB, double enough);
 };
 
 /// The signed distance of two bodies at the given poses: the least referencePieceDistance
@@ -91,8 +92,14 @@ class ReferenceBody {
 /// conservative lower bounds (the gap of bounding spheres, then the supporting distance
 /// along the line of their centres, §2.3), and only pairs whose bound may beat the least
 /// found are measured. Throws std::invalid_argument for a pose that is not finite.
+///
+/// `enough`: a caller that only needs the distance where it is below `enough` (the
+/// penetration check, `enough` = 0) lets the search stop once every bound left proves the
+/// pair at least that far apart; it then returns such a lower bound (at least `enough`, at
+/// most the distance) instead of the distance. The default, minus infinity, never stops early.
 double referenceSignedDistance(const ReferenceBody& a, const Pose<double>& poseA, const ReferenceBody& b,
-                               const Pose<double>& poseB);
+                               const Pose<double>& poseB,
+                               double enough = -std::numeric_limits<double>::infinity());
 
 /// The depth a pair must reach within a frame, with no collision reported, to count as
 /// having tunnelled: twice the collision tolerance, or, for a pair that starts the frame
