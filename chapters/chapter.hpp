@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,18 +29,6 @@ namespace chapter {
 inline void addFigureOptions(CLI::App& app, std::string& out) {
   app.add_option("--out", out, "the folder for the figures, created if needed")->type_name("DIR")->capture_default_str();
   addFormatOption(app);
-}
-
-/// The output folder from `--out DIR` (default: the current folder), created if needed, and
-/// the figures' format from `--format` (see addFigureOptions()). `--help` prints the usage
-/// and exits 0; any other argument is an error (exit status 2).
-inline std::string outputFolder(int argc, char** argv) {
-  std::string out = ".";
-  CLI::App app{"Draws this chapter's figures of the paper in DIR, as PNG (the default), SVG or PDF files."};
-  addFigureOptions(app, out);
-  parseOrExit(app, argc, argv);
-  std::filesystem::create_directories(out);
-  return out;
 }
 
 /// Declares `--trace` (into `trace`) on `app`: the program prints its stage's trace for the
