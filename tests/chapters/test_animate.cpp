@@ -69,7 +69,7 @@ TEST_CASE("gjkx_animate draws a gjkx_simulate run as an animated WebP in which t
   const auto run = test::runProgram(GJKX_SIMULATE, (dir / "box.json").string() + " --out " + (dir / "run").string() + " --quiet");
   INFO(run.output);
   REQUIRE(run.status == 0);
-  for (const std::string view : {"3d", "xz"}) {
+  for (const std::string view : {"3d", "xz", "spacetime"}) {
     SECTION("view " + view) {
       const auto file = dir / ("box-" + view + ".webp");
       const auto r = test::runProgram(GJKX_ANIMATE, (dir / "box.json").string() + " " + (dir / "run").string() + " --out " +
