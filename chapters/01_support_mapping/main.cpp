@@ -141,8 +141,9 @@ void printClimb(const std::string& title, const Polytope<double>& X, const V& s,
   for (std::size_t k = 0; k < path.size(); ++k) {
     const int v = path[k];
     std::string neighbours;
-    for (int n : X.neighbours(v)) neighbours += (neighbours.empty() ? "" : " ") + std::to_string(n) + ": " + chapter::fixed(s.dot(X.vertex(n)), 4);
-    table.rows.push_back({std::to_string(k), std::to_string(v), chapter::fixed(s.dot(X.vertex(v)), 4), neighbours,
+    for (int n : X.neighbours(v))
+      neighbours += (neighbours.empty() ? "" : " ") + std::to_string(n) + ": " + chapter::fixed(s.dot(X.vertex(n)), 6);
+    table.rows.push_back({std::to_string(k), std::to_string(v), chapter::fixed(s.dot(X.vertex(v)), 6), neighbours,
                           k + 1 < path.size() ? "to " + std::to_string(path[k + 1])
                                               : "stop: no neighbour higher, S_X(s) = vertex " + std::to_string(v)});
   }

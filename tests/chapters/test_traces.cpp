@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -66,6 +67,40 @@ void checkRefused(const std::string& program, const std::string& arguments, cons
 }
 
 }  // namespace
+
+TEST_CASE("01_support_mapping --trace: each hill climb rises to a vertex no neighbour tops", "[chapters][trace][support_mapping]") {
+  // Hill climbing (§2.1) on a convex polytope: from each vertex to its best neighbour while that
+  // is strictly higher along s. So on every row s.x is above the row before, the step taken goes
+  // to the next row's vertex, that vertex is the best of the neighbours listed, and the last row
+  // (S_X(s), the global maximum on a convex polytope) has no neighbour higher.
+  const auto result = run(GJKX_CHAPTER_01, "climb", "--vertices 1000 --direction 1,2,-0.5 --trace");
+  for (const std::string title : {"support-mapping-hill-climbing: cold start (§2.1, s = 0.4364, 0.8729, -0.2182)",
+                                  "support-mapping-hill-climbing: warm start from the last answer"}) {
+    INFO(title);
+    const auto rows = table(result.output, title);
+    REQUIRE(!rows.empty());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      // The neighbours' cell: "n: s.x_n" pairs; the best of them.
+      std::istringstream cell(rows[k][3]);
+      std::string name;
+      double best = -1e300, value = 0;
+      bool nextListed = false;
+      while (cell >> name >> value) {
+        best = std::max(best, value);
+        nextListed = nextListed || (k + 1 < rows.size() && name == rows[k + 1][1] + ":");
+      }
+      if (k + 1 < rows.size()) {
+        CHECK(number(rows[k + 1][2]) > number(rows[k][2]));
+        CHECK(rows[k][4] == "to " + rows[k + 1][1]);
+        CHECK(nextListed);
+        CHECK(number(rows[k + 1][2]) == Approx(best).margin(1e-6));  // the best neighbour (ties printed alike)
+      } else {
+        CHECK(best <= number(rows[k][2]));
+        CHECK(rows[k][4] == "stop: no neighbour higher, S_X(s) = vertex " + rows[k][1]);
+      }
+    }
+  }
+}
 
 TEST_CASE("02_gjk --trace prints Fig. 2's run step by step", "[chapters][trace][gjk]") {
   // The run of tests/gjk/test_gjk_figure2_steps.cpp: six iterations, from s_0 = (0,-1) with
