@@ -283,8 +283,10 @@ void NarrowPhase<S>::piecesWithin(StepContext& step, int i, int j, double t, con
                                   std::vector<std::pair<PiecePair, GjkResult<double>>>& out) {
   for (const PiecePair& p : piecePairs(step, i, j, t, t)) {
     ++step.frame.report.counters.collisionChecks;
+    GjkCache<double>* cache =
+        step.settings.warmStarts ? &staticCoherence_[step.piecePairKey(i, p.a, j, p.b)] : nullptr;
     const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[p.a], si.worldFromBody},
-                                    Placed<Shape<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody});
+                                    Placed<Shape<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody}, {}, cache);
     if (g.status == GjkStatus::Overlapping || g.distance <= distance) out.emplace_back(p, g);
   }
 }

@@ -75,6 +75,10 @@ class NarrowPhase {
   std::map<long long, std::unique_ptr<BodyPairQuery<S>>> fronts_;
   /// Per convex piece pair, where its last time-of-impact query ended (WorldSettings::coherence).
   std::unordered_map<std::uint64_t, ExtrusionCache<S>> coherence_;
+  /// Per convex piece pair, the simplex its last static distance test ended on (piecesWithin):
+  /// a pair in contact is measured at every interval's start, each time from where it was,
+  /// so that GJK takes one or two iterations (§2.2's coherence) rather than a cold run.
+  std::unordered_map<std::uint64_t, GjkCache<double>> staticCoherence_;
   /// Per body, its path's motion in S and the path it was made from (WorldBody::pathSerial):
   /// made once per path for all the queries that read it (float only).
   std::vector<std::pair<long, Motion<S>>> motions_;
