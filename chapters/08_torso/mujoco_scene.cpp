@@ -34,6 +34,9 @@
 // contact), so the runner takes a whole number of steps per frame of at most 2 ms
 // (21 a frame at 24 frames a second). MuJoCo has no continuous collision detection.
 //
+// MuJoCo resets a simulation whose accelerations blow up (mjWARN_BADQACC) to its start; the
+// runner stops there with exit status 1 and says when, rather than measure a run restarted.
+//
 // The contacts. MuJoCo 2.2 allocates its contact and constraint buffers once (the MJCF
 // <size nconmax njmax>): the runner sizes them from the scene (--max-contacts, by default
 // 10 per moving body and at least 500) and says on standard error if a step found more.
@@ -52,6 +55,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -242,7 +246,14 @@ int main(int argc, char** argv) {
   int mostContacts = 0, mostRows = 0;  // of a step: what the buffers had to hold
   peer.stepFrame = [&](peer_run::ContactPairs& pairs) {
     for (int s = 0; s < substeps; ++s) {
+      const double before = d->time;
       mj_step(m, d);
+      // MuJoCo resets a simulation whose accelerations became NaN, infinite or huge (its
+      // mjWARN_BADQACC) back to the model's start: what follows would be a new run.
+      if (d->warning[mjWARN_BADQACC].number > 0)
+        throw std::runtime_error("MuJoCo found its simulation unstable (bad accelerations, mjWARN_BADQACC) at t = " +
+                                 std::to_string(before) +
+                                 " s and reset it to the start: the run stops here");
       contactPairs(m, d, pairs);  // the contacts the step found at its start and answered
       mostContacts = std::max(mostContacts, d->ncon);
       mostRows = std::max(mostRows, d->nefc);
@@ -259,8 +270,9 @@ int main(int argc, char** argv) {
     return atEnd.count({i, j}) > 0;
   };
   const int status = peer_run::measure("gjkx_mujoco_scene", loaded, peer, substeps, options.out, options.quiet);
-  std::cerr << "gjkx_mujoco_scene: at most " << mostContacts << " contacts (of " << m->nconmax << ") and " << mostRows
-            << " constraint rows (of " << m->njmax << ") in a step\n";
+  if (status == 0)
+    std::cerr << "gjkx_mujoco_scene: at most " << mostContacts << " contacts (of " << m->nconmax << ") and " << mostRows
+              << " constraint rows (of " << m->njmax << ") in a step\n";
   if (d->warning[mjWARN_CONTACTFULL].number > 0 || d->warning[mjWARN_CNSTRFULL].number > 0)
     std::cerr << "gjkx_mujoco_scene: MuJoCo's buffers were full in " << d->warning[mjWARN_CONTACTFULL].number
               << " steps (contacts) and " << d->warning[mjWARN_CNSTRFULL].number

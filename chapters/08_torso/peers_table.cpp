@@ -4,12 +4,14 @@
 // gjkx_mujoco_scene and gjkx_ode_scene (those that were built), one run each, measured by
 // the same checks (gjkx::FrameVerifier), written as one markdown table.
 //
-//   gjkx_peers_table NAME=SCENE.json ... [--duration S] [--work DIR] [--bin DIR] --table OUT.md
+//   gjkx_peers_table NAME=SCENE.json ... [--duration S] [--work DIR] [--bin DIR] [--reuse] --table OUT.md
 //
 // For each scene and simulator it runs `PROGRAM SCENE --out WORK/NAME-PROGRAM --quiet`
 // (gjkx_simulate with `--contact hybrid --checks`; a scene longer than --duration is cut
-// to it with each program's --duration), one after the other, and reads the SUMMARY line,
-// frames.csv and bodies.csv. The columns:
+// to it with each program's --duration), one after the other, its standard output and
+// error kept in that folder, and reads the run's frames.csv and bodies.csv (every runner
+// writes the columns read). With --reuse, a run whose folder already holds all its frames
+// is read without running it again. The columns:
 // - wall time per simulated second: the simulator's own wall time (gjkx_simulate's frames
 //   less their checks_s; a peer's wall_s, which leaves its checks out);
 // - deepest penetration at any frame's end and pairs tunnelled: the SUMMARY's, by the checks;
@@ -18,7 +20,8 @@
 //   bodies) at the last frame less at the start, and its largest rise above the start
 //   over the frames: a resting pile loses energy where contacts absorb its fall; a rise is
 //   energy the simulator made.
-// A program that fails is a row saying so, with its exit status. A bad command line exits 2,
+// A program that fails is a row saying so, with its exit status and the last line it wrote
+// on standard error (each run's standard error is kept in its folder, stderr.txt). A bad command line exits 2,
 // a scene that cannot be read 1.
 #include "../command_line.hpp"
 #include "../formatting.hpp"
@@ -29,6 +32,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -45,50 +49,66 @@ namespace {
 struct Row {
   std::string scene, simulator, command;
   int status = 0;                        ///< the program's exit status
+  std::string reason;                    ///< why it failed: the last line it wrote on standard error
   double simulated = 0, wall = 0;        ///< simulated seconds; the simulator's wall seconds
   double penetration = 0;                ///< deepest penetration at a frame's end (m)
   long tunnelled = 0;                    ///< pairs tunnelled
   double energyDrift = 0, energyRise = 0;  ///< J: end less start; largest rise above the start
 };
 
-/// Runs a shell command; its standard output, and its exit status in `status`.
-std::string runCommand(const std::string& command, int& status) {
-  std::string output;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) {
-    status = -1;
-    return output;
-  }
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int raw = pclose(pipe);
-  status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return output;
-}
-
-/// The key=value pairs of the SUMMARY line of `output`.
-std::map<std::string, double> summaryOf(const std::string& output) {
-  std::map<std::string, double> keys;
-  const auto at = output.find("SUMMARY ");
-  if (at == std::string::npos) return keys;
-  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
-  for (std::string item; line >> item;)
-    if (const auto eq = item.find('='); eq != std::string::npos) keys[item.substr(0, eq)] = std::stod(item.substr(eq + 1));
-  return keys;
-}
-
-/// Sum of a column of a CSV file with a header.
-double columnSum(const std::string& path, const std::string& name) {
+/// The last line of a file (empty if none): a failed program's reason.
+std::string lastLine(const std::string& path) {
   std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+/// Runs a shell command (its output redirected by the command itself); its exit status in `status`.
+void runCommand(const std::string& command, int& status) {
+  const int raw = std::system(command.c_str());
+  status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+/// A run's frames.csv read back: the columns every runner writes (gjkx_simulate's and the
+/// peers' frames.csv share them: time, wall_s, max_penetration, tunnelled, checks_s).
+struct FramesRead {
+  int frames = 0;             ///< rows
+  double simulated = 0;       ///< the last frame's time
+  double wall = 0;            ///< the sum of wall_s
+  double checks = 0;          ///< the sum of checks_s
+  double penetration = 0;     ///< the largest max_penetration
+  long tunnelled = 0;         ///< the sum of tunnelled
+};
+
+/// Reads `path` (a frames.csv); throws std::runtime_error naming the file and the column.
+FramesRead readFrames(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read");
   std::string line;
   std::getline(in, line);
   const std::vector<std::string> names = chapter::csvFields(line);
-  const auto column = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
-  if (column == names.size()) throw std::runtime_error(path + ": no column '" + name + "'");
-  double sum = 0;
-  while (std::getline(in, line))
-    if (!line.empty()) sum += std::stod(chapter::csvFields(line).at(column));
-  return sum;
+  auto column = [&](const char* name) {
+    const auto k = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+    if (k == names.size()) throw std::runtime_error(path + ": no column '" + name + "'");
+    return k;
+  };
+  const std::size_t time = column("time"), wall = column("wall_s"), penetration = column("max_penetration"),
+                    tunnelled = column("tunnelled"), checks = column("checks_s");
+  FramesRead r;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = chapter::csvFields(line);
+    if (f.size() != names.size()) throw std::runtime_error(path + ": a row of " + std::to_string(f.size()) + " cells");
+    ++r.frames;
+    r.simulated = std::stod(f[time]);
+    r.wall += std::stod(f[wall]);
+    r.checks += std::stod(f[checks]);
+    r.penetration = std::max(r.penetration, std::stod(f[penetration]));
+    r.tunnelled += std::lround(std::stod(f[tunnelled]));
+  }
+  return r;
 }
 
 /// A body's mechanical energy: kinetic plus gravity's potential of its centre of mass.
@@ -130,8 +150,16 @@ std::pair<double, double> energyDrift(const peer_run::PeerScene& scene, const st
   return {energy.rbegin()->second - start, rise};
 }
 
-/// The table (see the file's head).
-std::string table(const std::vector<Row>& rows, double duration, const std::string& command) {
+/// The machine's load averages over 1, 5 and 15 minutes (/proc/loadavg), as text ("unknown" without it).
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double one = 0, five = 0, fifteen = 0;
+  if (!(in >> one >> five >> fifteen)) return "unknown";
+  return chapter::format("%.1f, ", one) + chapter::format("%.1f, ", five) + chapter::format("%.1f", fifteen);
+}
+
+/// The table (see the file's head); `load` says how busy the machine was.
+std::string table(const std::vector<Row>& rows, double duration, const std::string& command, const std::string& load) {
   using chapter::format;
   std::ostringstream md;
   md << "| scene | simulator | simulated | wall time per simulated second | deepest penetration | pairs tunnelled "
@@ -139,7 +167,7 @@ std::string table(const std::vector<Row>& rows, double duration, const std::stri
   for (const Row& r : rows) {
     md << "| " << r.scene << " | " << r.simulator << " | ";
     if (r.status != 0) {
-      md << "failed (exit status " << r.status << ") | | | | |\n";
+      md << "failed (exit status " << r.status << (r.reason.empty() ? "" : ": " + r.reason) << ") | | | | |\n";
       continue;
     }
     md << format("%.3g s", r.simulated) << " | " << format("%.3g s", r.wall / r.simulated) << " | "
@@ -148,7 +176,8 @@ std::string table(const std::vector<Row>& rows, double duration, const std::stri
   }
   md << "\nOne run each, one after the other, on one core of a shared 2-core machine";
   if (duration > 0) md << format("; scenes longer than %g s cut to it", duration);
-  md << ". Runs:\n\n";
+  md << " (its load averages over 1, 5 and 15 minutes: " << load
+     << "; wall times grow with the load, the other columns do not). Runs:\n\n";
   for (const Row& r : rows) md << "- `" << r.command << "`\n";
   md << "\nMade by `" << command << "`.\n";
   return md.str();
@@ -168,6 +197,8 @@ int main(int argc, char** argv) {
   app.add_option("--work", work, "folder for the runs (one folder each)")->capture_default_str();
   app.add_option("--bin", bin, "folder of the programs (default: this program's)");
   app.add_option("--table", tableOut, "the markdown table to write")->required();
+  bool reuse = false;
+  app.add_flag("--reuse", reuse, "read a run already complete in WORK (all its frames) instead of running it again");
   chapter::parseOrExit(app, argc, argv);
   if (bin.empty()) bin = std::filesystem::canonical("/proc/self/exe").parent_path().string();
 
@@ -184,6 +215,7 @@ int main(int argc, char** argv) {
                                        {"gjkx_bullet_scene", "", "Bullet"},
                                        {"gjkx_mujoco_scene", "", "MuJoCo"},
                                        {"gjkx_ode_scene", "", "ODE"}};
+  const std::string loadBefore = loadAverage();
   std::vector<Row> rows;
   for (const std::string& item : scenes) {
     const auto eq = item.find('=');
@@ -210,29 +242,44 @@ int main(int argc, char** argv) {
       row.simulator = sim.name;
       row.command = sim.program + " " + path + sim.options + (cut ? chapter::format(" --duration %g", duration) : "") +
                     " --out " + out + " --quiet";
-      std::cerr << "gjkx_peers_table: " << row.command << "\n";
-      const std::string output = runCommand(bin + "/" + row.command, row.status);
-      const auto summary = summaryOf(output);
-      if (row.status == 0 && summary.count("wall_s") && summary.count("sim_s")) {
+      const std::string frames = out + "/frames.csv";
+      bool done = false;  // --reuse: a complete run is already there
+      if (reuse && std::filesystem::exists(frames)) {
         try {
-          row.simulated = summary.at("sim_s");
-          row.wall = sim.program == "gjkx_simulate" ? summary.at("wall_s") - columnSum(out + "/frames.csv", "checks_s")
-                                                    : summary.at("wall_s");
-          row.penetration = summary.at("max_penetration");
-          row.tunnelled = long(summary.at("tunnelled"));
+          done = readFrames(frames).frames == scene.frames;
+        } catch (const std::exception&) {
+          done = false;
+        }
+      }
+      if (!done) {
+        std::cerr << "gjkx_peers_table: " << row.command << "\n";
+        std::filesystem::remove_all(out);
+        std::filesystem::create_directories(out);
+        runCommand(bin + "/" + row.command + " > " + out + "/stdout.txt 2> " + out + "/stderr.txt", row.status);
+        if (row.status != 0) row.reason = lastLine(out + "/stderr.txt");
+      }
+      if (row.status == 0) {
+        try {
+          const FramesRead f = readFrames(frames);
+          if (f.frames != scene.frames)
+            throw std::runtime_error(frames + ": " + std::to_string(f.frames) + " frames of " + std::to_string(scene.frames));
+          row.simulated = f.simulated;
+          // gjkx_simulate's wall_s holds its checks; a peer's leaves them out.
+          row.wall = sim.program == "gjkx_simulate" ? f.wall - f.checks : f.wall;
+          row.penetration = f.penetration;
+          row.tunnelled = f.tunnelled;
           std::tie(row.energyDrift, row.energyRise) = energyDrift(scene, out + "/bodies.csv");
         } catch (const std::exception& e) {
           std::cerr << "gjkx_peers_table: " << row.command << ": " << e.what() << "\n";
           row.status = -1;
+          row.reason = e.what();
         }
-      } else if (row.status == 0) {
-        row.status = -1;  // no SUMMARY line
       }
       rows.push_back(row);
     }
   }
   std::ofstream file(tableOut);
-  if (!(file << table(rows, duration, command))) {
+  if (!(file << table(rows, duration, command, "before the runs " + loadBefore + ", after them " + loadAverage()))) {
     std::cerr << "gjkx_peers_table: cannot write " << tableOut << "\n";
     return 1;
   }
