@@ -77,18 +77,23 @@ std::vector<std::string> row(const std::string& table, const std::string& name) 
   return {};
 }
 
-}  // namespace
-
-TEST_CASE("08_torso --stats works out the paper's statistics from a run's frames.csv", "[torso][stats]") {
-  const fs::path run = runFolder("hand", std::string(header) + rows);
+// The table `08_torso --stats LABEL=RUN` writes for the run folder `run` (a test fails when it fails).
+std::string tableOf(const fs::path& run, const std::string& label) {
   const fs::path table = run / "table.md";
-  const Result r = stats("hand=\"" + run.string() + "\" --table \"" + table.string() + "\"", run / "log.txt");
+  const Result r = stats(label + "=\"" + run.string() + "\" --table \"" + table.string() + "\"", run / "log.txt");
   INFO(r.output);
   REQUIRE(r.status == 0);
   std::ifstream in(table);
   std::stringstream s;
   s << in.rdbuf();
-  const std::string md = s.str();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("08_torso --stats works out the paper's statistics from a run's frames.csv", "[torso][stats]") {
+  const fs::path run = runFolder("hand", std::string(header) + rows);
+  const std::string md = tableOf(run, "hand");
   INFO(md);
   CHECK(md.rfind("| | hand | paper (§6) |", 0) == 0);
   CHECK(row(md, "execution / simulation time: min") == std::vector<std::string>{"0.5", "1.0"});
@@ -124,14 +129,7 @@ TEST_CASE("08_torso --stats adds the contact solver to the method's time and tab
   int k = 0;
   for (std::string line; std::getline(lines, line); ++k) csv += line + extra[k] + "\n";
   const fs::path run = runFolder("hybrid", csv);
-  const fs::path table = run / "table.md";
-  const Result r = stats("\"" + run.string() + "\" --table \"" + table.string() + "\"", run / "log.txt");
-  INFO(r.output);
-  REQUIRE(r.status == 0);
-  std::ifstream in(table);
-  std::stringstream s;
-  s << in.rdbuf();
-  const std::string md = s.str();
+  const std::string md = tableOf(run, "hybrid");
   INFO(md);
   CHECK(row(md, "execution / simulation time: median").at(0) == "2");
   CHECK(row(md, "contact solver wall time, s (of the method's)").at(0) == "0.25");
