@@ -110,8 +110,8 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       apply(row, p.normalImpulse * n + p.frictionImpulse);
     }
   }
-  // Sweeps until no impulse changes the velocity at its point by more than a hundredth of
-  // the speed that closes the rest separation in the interval (StepTuning::contactIterations
+  // Sweeps until no impulse changes the velocity at its point by more than contactSettled
+  // (a tenth) of the speed that closes the rest separation in the interval (StepTuning::contactIterations
   // at most). The rows go from the bottom up (against gravity): the weight of a stack
   // reaches the floor in one sweep, as Guendelman et al. order their contact graph.
   if (step.scene.gravity.squaredNorm() > 0) {
@@ -119,7 +119,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     std::stable_sort(rows.begin(), rows.end(),
                      [&](const Row& a, const Row& b) { return up.dot(a.point->point) < up.dot(b.point->point); });
   }
-  const double settled = 1e-2 * rest / dt;
+  const double settled = tuning.contactSettled * rest / dt;
   // One sweep over the rows: with friction, the tangent impulse within Coulomb's disc of
   // radius limit, then the normal. Returns the largest velocity change it made.
   std::vector<double> limits(rows.size(), 0.0);

@@ -41,6 +41,7 @@ void StepTuning::validate(const std::string& field) const {
     failInput(field + ".restSeparation", "must lie in [0, contactBand)");
   if (!(contactSpeed >= 0 && std::isfinite(contactSpeed))) failInput(field + ".contactSpeed", "must be finite and not negative");
   atLeast(contactIterations, 1, field + ".contactIterations");
+  positive(contactSettled, field + ".contactSettled");
   atLeast(contactIntervals, 1, field + ".contactIntervals");
   if (!(contactCheckBand > 0 && contactCheckBand <= restSeparation))
     failInput(field + ".contactCheckBand", "must lie in (0, restSeparation]");
