@@ -18,6 +18,10 @@
 //                           under the hybrid contact model (the paper's future work), from
 //                           the kept run figures/data/torso-run-hybrid/frames.csv
 //                           (--hybrid-run DIR); skipped without it.
+//   fig06-torso-running-time-paper.png: the reproduction, on the same axes: the same scene
+//                           with §5 as the paper wrote it (gjkx_simulate --solver paper), from
+//                           the kept run figures/data/torso-run-paper/frames.csv
+//                           (--paper-run DIR); skipped without it.
 // Options: --run DIR reads DIR/bodies.csv and DIR/frames.csv instead; --frames DIR writes one
 // PNG per frame of the run (an animation); --seed N and --reduced must match how the run's
 // scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
@@ -46,6 +50,9 @@ using torso::V3;
 #endif
 #ifndef GJKX_TORSO_RUN_HYBRID  // the same scene under the hybrid contact model (Fig. 6's companion)
 #define GJKX_TORSO_RUN_HYBRID "figures/data/torso-run-hybrid"
+#endif
+#ifndef GJKX_TORSO_RUN_PAPER  // the same scene with §5 as the paper wrote it (Fig. 6 reproduced)
+#define GJKX_TORSO_RUN_PAPER "figures/data/torso-run-paper"
 #endif
 #ifndef GJKX_TORSO_RUNNING_TIME_GP  // Fig. 6's gnuplot script, beside this file
 #define GJKX_TORSO_RUNNING_TIME_GP "chapters/08_torso/running_time.gp"
@@ -344,7 +351,8 @@ void statsTable(const std::vector<std::string>& specs, const std::string& table,
 int main(int argc, char** argv) {
   CLI::App app{"Draws chapter 08's figures: the generated torso and plant, and Fig. 5 (the torso crashing into "
                "the plant) from a kept run of gjkx_simulate."};
-  std::string out = ".", run = GJKX_TORSO_RUN, hybridRun = GJKX_TORSO_RUN_HYBRID, framesDir;
+  std::string out = ".", run = GJKX_TORSO_RUN, hybridRun = GJKX_TORSO_RUN_HYBRID, paperRun = GJKX_TORSO_RUN_PAPER,
+              framesDir;
   std::uint32_t seed = 1;
   bool reduced = false;
   std::vector<std::string> statsRuns;
@@ -353,6 +361,10 @@ int main(int argc, char** argv) {
   app.add_option("--run", run, "the folder of the run (bodies.csv of gjkx_simulate)")->capture_default_str();
   app.add_option("--hybrid-run", hybridRun,
                  "the folder of the same scene's run under the hybrid contact model (frames.csv), drawn beside Fig. 6")
+      ->capture_default_str();
+  app.add_option("--paper-run", paperRun,
+                 "the folder of the same scene's run with §5 as the paper wrote it (frames.csv; gjkx_simulate "
+                 "--solver paper), drawn beside Fig. 6 as the reproduction")
       ->capture_default_str();
   app.add_option("--frames", framesDir, "also write one figure per frame of the run into this folder");
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
@@ -412,7 +424,7 @@ int main(int argc, char** argv) {
     }
     // Fig. 6 and its companion, the same scene under the hybrid contact model, on the same
     // axes (those that show both runs whole), so that the two compare at a glance.
-    std::optional<torso::Run> kept, hybrid;
+    std::optional<torso::Run> kept, hybrid, paper;
     if (std::filesystem::exists(run + "/frames.csv"))
       kept = torso::readRun(run);
     else
@@ -423,11 +435,17 @@ int main(int argc, char** argv) {
     else
       std::cerr << "08_torso: warning: no kept run at " << hybridRun
                 << "/frames.csv; fig06-torso-running-time-hybrid.png skipped\n";
+    if (std::filesystem::exists(paperRun + "/frames.csv"))
+      paper = torso::readRun(paperRun);
+    else
+      std::cerr << "08_torso: warning: no kept run at " << paperRun
+                << "/frames.csv; fig06-torso-running-time-paper.png skipped\n";
     std::vector<const torso::Run*> shown;
-    for (const auto* r : {&kept, &hybrid})
+    for (const auto* r : {&kept, &hybrid, &paper})
       if (*r) shown.push_back(&**r);
     if (kept) runningTimeFigure(out, *kept, "fig06-torso-running-time", fig6Axes(shown));
     if (hybrid) runningTimeFigure(out, *hybrid, "fig06-torso-running-time-hybrid", fig6Axes(shown));
+    if (paper) runningTimeFigure(out, *paper, "fig06-torso-running-time-paper", fig6Axes(shown));
     if (!framesDir.empty()) {
       if (frames.empty()) throw std::runtime_error("--frames needs a run: " + run + "/bodies.csv is missing");
       std::filesystem::create_directories(framesDir);
