@@ -16,61 +16,19 @@
 //
 // A missing file or column exits 1 naming it; a bad command line exits 2.
 #include "../command_line.hpp"
-#include "../formatting.hpp"
+#include "../08_torso/run_stats.hpp"  // torso::readRun: a run read back from its folder
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace {
 
-/// One run's frames: each frame's length in simulated seconds and its cost in seconds.
-struct FrameCosts {
-  std::vector<double> time, length, cost;
-};
-
-/// Reads DIR/frames.csv: the columns `time` and `cpu_s` (or `wall_s` less `checks_s`).
-FrameCosts readFrames(const std::string& folder, bool wall) {
-  const std::string path = folder + "/frames.csv";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read (no run of gjkx_simulate there?)");
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = chapter::csvFields(line);
-  const auto columnOf = [&](const std::string& name) {
-    const auto found = std::find(names.begin(), names.end(), name);
-    if (found == names.end())
-      throw std::runtime_error(path + ": no column '" + name + "' (a frames.csv of an older gjkx_simulate? run it again)");
-    return std::size_t(found - names.begin());
-  };
-  const std::size_t time = columnOf("time");
-  const std::size_t cost = columnOf(wall ? "wall_s" : "cpu_s");
-  const std::size_t checks = wall ? columnOf("checks_s") : cost;
-  FrameCosts frames;
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    const std::vector<std::string> cells = chapter::csvFields(line);
-    if (cells.size() != names.size())
-      throw std::runtime_error(path + ":" + std::to_string(row) + ": " + std::to_string(cells.size()) + " cells for " +
-                               std::to_string(names.size()) + " columns");
-    const auto number = [&](std::size_t k) {
-      try {
-        return std::stod(cells[k]);
-      } catch (const std::logic_error&) {
-        throw std::runtime_error(path + ":" + std::to_string(row) + ": column '" + names[k] + "': not a number");
-      }
-    };
-    const double t = number(time);
-    frames.length.push_back(t - (frames.time.empty() ? 0.0 : frames.time.back()));
-    frames.time.push_back(t);
-    frames.cost.push_back(number(cost) - (wall ? number(checks) : 0.0));
-  }
-  if (frames.time.empty()) throw std::runtime_error(path + ": no frames");
-  return frames;
+/// Frame k's cost in seconds: its processor time (cpu_s), or with `wall` its wall time
+/// less the independent checks' (wall_s - checks_s). Throws naming a missing column.
+double frameCost(const torso::Run& run, std::size_t k, bool wall) {
+  return wall ? run.at("wall_s")[k] - run.at("checks_s")[k] : run.at("cpu_s")[k];
 }
 
 }  // namespace
@@ -91,30 +49,32 @@ int main(int argc, char** argv) {
       return chapter::kUsageError;
     }
     const std::string label = run.substr(0, eq);
-    FrameCosts frames;
+    // Each frame's cost over its length: 1 is real time.
+    std::vector<double> ratio;
+    double total = 0;
+    torso::Run frames;
     try {
-      frames = readFrames(run.substr(eq + 1), wall);
+      frames = torso::readRun(run.substr(eq + 1));
+      for (std::size_t k = 0; k < frames.frames(); ++k) {
+        const double cost = frameCost(frames, k, wall), length = frames.frameLength(k);
+        ratio.push_back(length > 0 ? cost / length : 0.0);
+        total += cost;
+      }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "gjkx_frame_ratios: %s\n", e.what());
       return 1;
     }
-    // Each frame's cost over its length: 1 is real time.
-    std::vector<double> ratio;
-    double total = 0;
-    for (std::size_t k = 0; k < frames.time.size(); ++k) {
-      ratio.push_back(frames.length[k] > 0 ? frames.cost[k] / frames.length[k] : 0.0);
-      total += frames.cost[k];
-    }
+    const std::vector<double>& time = frames.at("time");
     const std::size_t worst = std::size_t(std::max_element(ratio.begin(), ratio.end()) - ratio.begin());
     std::vector<double> sorted = ratio;
     std::sort(sorted.begin(), sorted.end());
     const std::size_t n = sorted.size();
     const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-    std::printf("RUN %s frames=%zu simulated_s=%.6g %s=%.4g slowest_at_t=%.4g\n", label.c_str(), n, frames.time.back(),
-                wall ? "wall_s" : "processor_s", total, frames.time[worst]);
+    std::printf("RUN %s frames=%zu simulated_s=%.6g %s=%.4g slowest_at_t=%.4g\n", label.c_str(), n, time.back(),
+                wall ? "wall_s" : "processor_s", total, time[worst]);
     std::printf("RATIO %s_slowest_frame_vs_real_time=%.4g\n", label.c_str(), ratio[worst]);
     std::printf("RATIO %s_median_frame_vs_real_time=%.4g\n", label.c_str(), median);
-    std::printf("RATIO %s_total_vs_real_time=%.4g\n", label.c_str(), total / frames.time.back());
+    std::printf("RATIO %s_total_vs_real_time=%.4g\n", label.c_str(), total / time.back());
     slowest.emplace_back(label, ratio[worst]);
   }
   if (slowest.size() == 2)
