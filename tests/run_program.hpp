@@ -46,6 +46,13 @@ inline std::filesystem::path freshFolder(const std::string& prefix, const std::s
   return dir;
 }
 
+/// The keys of the SUMMARY line every peer's runner writes (chapters/08_torso/peer_run.hpp).
+inline const std::vector<std::string>& peerSummaryKeys() {
+  static const std::vector<std::string> keys = {"frames", "sim_s", "wall_s", "steps", "max_penetration",
+                                                "tunnelled", "kinetic_start", "kinetic_end", "kinetic_max"};
+  return keys;
+}
+
 /// The key=value pairs of the SUMMARY line of a program's `output` (empty if it has none).
 inline std::map<std::string, double> summaryKeys(const std::string& output) {
   std::map<std::string, double> keys;
