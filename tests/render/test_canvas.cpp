@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,8 +24,11 @@ using Eigen::Vector3d;
 
 namespace {
 
+// Each test case runs as its own process, and CTest runs them side by side: the process id
+// keeps one case's files apart from another's.
 std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("gjkx_render_test_" + name)).string();
+  return (std::filesystem::temp_directory_path() /
+          ("gjkx_render_test_" + std::to_string(::getpid()) + "_" + name)).string();
 }
 
 std::vector<char> fileBytes(const std::string& path) {
