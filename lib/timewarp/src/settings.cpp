@@ -31,6 +31,7 @@ void StepTuning::validate(const std::string& field) const {
   positive(minLookAhead, field + ".minLookAhead");
   if (!(maxLookAhead >= minLookAhead && maxLookAhead <= 1))
     failInput(field + ".maxLookAhead", "must lie in [minLookAhead, 1]");
+  if (!(windowBand > 0 && windowBand <= 1)) failInput(field + ".windowBand", "must lie in (0, 1]");
   if (!(minPath > 0 && minPath < 1)) failInput(field + ".minPath", "must lie in (0, 1)");
   if (!(settleSeconds >= 0 && std::isfinite(settleSeconds))) failInput(field + ".settleSeconds", "must be finite and not negative");
   atLeast(caughtAfter, 1, field + ".caughtAfter");
