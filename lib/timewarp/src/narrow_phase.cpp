@@ -24,23 +24,6 @@ double speedBound(const WorldBody& body) {
   return bound;
 }
 
-/// How fast the distance of bodies P and Q can shrink over their paths: the speed of their
-/// centres relative to each other, and each one's turning, |v_Q − v_P| + |w_P| r_P + |w_Q| r_Q,
-/// the largest at the paths' two ends (a bound for the look-ahead, as speedBound's).
-double closingBound(const WorldBody& P, const WorldBody& Q) {
-  double bound = 0;
-  for (const bool atEnd : {false, true}) {
-    const BodyState& p = atEnd ? P.path.end : P.path.start;
-    const BodyState& q = atEnd ? Q.path.end : Q.path.start;
-    const Eigen::Vector3d vp = P.rigid.isStatic() ? Eigen::Vector3d::Zero() : p.velocity;
-    const Eigen::Vector3d vq = Q.rigid.isStatic() ? Eigen::Vector3d::Zero() : q.velocity;
-    const double wp = P.rigid.isStatic() ? 0.0 : p.angularVelocity.norm() * P.radius;
-    const double wq = Q.rigid.isStatic() ? 0.0 : q.angularVelocity.norm() * Q.radius;
-    bound = std::max(bound, (vq - vp).norm() + wp + wq);
-  }
-  return bound;
-}
-
 }  // namespace
 
 template <typename S>
@@ -200,8 +183,9 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
   // elsewhere meanwhile (a box turning at 16 rad/s put another corner 3.9 mm into the
   // floor within one look-ahead). So the skipped window [t_c, t_c + look] is asked once
   // more, with half the distance the pair has at t_c as its band: no contact nearer than
-  // that, or the first one. Within that window a contact still leaving moves on by the
-  // time the pair needs to close the rest of its distance at its fastest (closingBound).
+  // that, or the first one; a contact found there that still leaves moves on by its own
+  // look-ahead, within the window. A pair nearer than StepTuning::windowBand at t_c
+  // (resting) moves on as before: halving its distance would find it again and again.
   double band = tolerance;  // the band of the next query: the tolerance, or a window's
   double windowEnd = t1;    // the end of the next query: t1, or the window's
   while (t0 < t1) {
@@ -273,28 +257,20 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     // response.hpp) approach by round-off (4e-16 m/s), and an impulse cannot change that:
     // they are taken as at rest, and looked at again once gravity has moved them.
     if (vn < -tuning.approachSpeed) return true;
-    const double minLook = tuning.minLookAhead * frameLength;
-    const double fastest = closingBound(step.bodies[i], step.bodies[j]);
-    // On by the time the pair needs to close the distance it has, at its fastest.
-    const auto onBy = [&](double cap) {
-      return std::clamp(fastest > 0 ? std::max(r.distance, 0.0) / fastest : cap, minLook, std::max(minLook, cap));
-    };
-    if (band < tolerance) {  // within a window
-      t0 = std::min(windowEnd, hit.time + onBy(windowEnd - hit.time));
+    const double leave = step.scene.collisionTolerance / std::max(vn, 1e-12);
+    const double look = std::clamp(leave, tuning.minLookAhead * frameLength, tuning.maxLookAhead * frameLength);
+    if (band < tolerance) {  // within a window: on by the look-ahead, to the window's end at most
+      t0 = std::min(windowEnd, hit.time + look);
       if (t0 >= windowEnd) {  // the window is covered
         windowEnd = t1;
         band = tolerance;
       }
-      continue;
-    }
-    const double leave = step.scene.collisionTolerance / std::max(vn, 1e-12);
-    const double look = std::clamp(leave, minLook, tuning.maxLookAhead * frameLength);
-    if (r.distance > tuning.windowBand * tolerance) {  // the window, asked with half the distance
+    } else if (r.distance > tuning.windowBand * tolerance) {  // the window, asked with half the distance
       band = 0.5 * r.distance;
       windowEnd = std::min(t1, hit.time + look);
       t0 = hit.time;
-    } else {  // nearer than that: on by what the pair needs to close its distance
-      t0 = hit.time + onBy(look);
+    } else {  // nearer than that (resting): on by the look-ahead
+      t0 = hit.time + look;
     }
   }
   return false;

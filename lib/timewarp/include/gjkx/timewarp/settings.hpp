@@ -66,9 +66,8 @@ struct StepTuning {
   /// within the frame, in case gravity turns it round.
   double maxLookAhead = 1.0 / 16;
   /// The time a look-ahead skips is checked with half the distance the pair has when it
-  /// leaves, if that distance is more than this fraction of the query's band (nearer, the
-  /// pair moves on by the time it needs to close its distance at its fastest instead:
-  /// narrow_phase.cpp). 0.25.
+  /// leaves, if that distance is more than this fraction of the query's band (nearer, a
+  /// resting pair, it moves on unchecked: narrow_phase.cpp). 0.25.
   double windowBand = 0.25;
   /// A path shorter than this fraction of a frame is not kept (it may not exist in float):
   /// the body flies on from the time of impact for that long. 1e-3.
