@@ -186,6 +186,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
   // that, or the first one; a contact found there that still leaves moves on by its own
   // look-ahead, within the window. A pair nearer than StepTuning::windowBand at t_c
   // (resting) moves on as before: halving its distance would find it again and again.
+  bool inWindow = false;    // the next query checks a skipped window
   double band = tolerance;  // the band of the next query: the tolerance, or a window's
   double windowEnd = t1;    // the end of the next query: t1, or the window's
   while (t0 < t1) {
@@ -221,6 +222,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
       t0 = windowEnd;  // the window is clear: on with the tolerance to t1
       windowEnd = t1;
       band = tolerance;
+      inWindow = false;
       continue;
     }
     hit.time = r.time;
@@ -259,14 +261,18 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     if (vn < -tuning.approachSpeed) return true;
     const double leave = step.scene.collisionTolerance / std::max(vn, 1e-12);
     const double look = std::clamp(leave, tuning.minLookAhead * frameLength, tuning.maxLookAhead * frameLength);
-    if (band < tolerance) {  // within a window: on by the look-ahead, to the window's end at most
+    if (inWindow) {  // within a window: on by the look-ahead, to the window's end at most
       t0 = std::min(windowEnd, hit.time + look);
       if (t0 >= windowEnd) {  // the window is covered
         windowEnd = t1;
         band = tolerance;
+        inWindow = false;
       }
     } else if (r.distance > tuning.windowBand * tolerance) {  // the window, asked with half the distance
-      band = 0.5 * r.distance;
+      // (A pair the query found within its band may be farther apart in double, where the
+      // distance is taken: the window's band is never wider than the query's.)
+      inWindow = true;
+      band = std::min(0.5 * r.distance, tolerance);
       windowEnd = std::min(t1, hit.time + look);
       t0 = hit.time;
     } else {  // nearer than that (resting): on by the look-ahead
