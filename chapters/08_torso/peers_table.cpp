@@ -32,9 +32,11 @@
 
 #include <sys/wait.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -63,6 +65,18 @@ std::string lastLine(const std::string& path) {
   while (std::getline(in, line))
     if (!line.empty()) last = line;
   return last;
+}
+
+/// `word` as one word of a shell command: as it is when it holds only characters the shell
+/// takes literally, else in single quotes (a scene's label may hold a space: "thin plate").
+std::string shellWord(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_./=:,+-", c) != nullptr;
+  });
+  if (plain) return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
 }
 
 /// Runs a shell command (its output redirected by the command itself); its exit status in `status`.
@@ -240,8 +254,8 @@ int main(int argc, char** argv) {
       Row row;
       row.scene = name;
       row.simulator = sim.name;
-      row.command = sim.program + " " + path + sim.options + (cut ? chapter::format(" --duration %g", duration) : "") +
-                    " --out " + out + " --quiet";
+      row.command = sim.program + " " + shellWord(path) + sim.options +
+                    (cut ? chapter::format(" --duration %g", duration) : "") + " --out " + shellWord(out) + " --quiet";
       const std::string frames = out + "/frames.csv";
       bool done = false;  // --reuse: a complete run is already there
       if (reuse && std::filesystem::exists(frames)) {
@@ -255,7 +269,9 @@ int main(int argc, char** argv) {
         std::cerr << "gjkx_peers_table: " << row.command << "\n";
         std::filesystem::remove_all(out);
         std::filesystem::create_directories(out);
-        runCommand(bin + "/" + row.command + " > " + out + "/stdout.txt 2> " + out + "/stderr.txt", row.status);
+        runCommand(shellWord(bin) + "/" + row.command + " > " + shellWord(out + "/stdout.txt") + " 2> " +
+                       shellWord(out + "/stderr.txt"),
+                   row.status);
         if (row.status != 0) row.reason = lastLine(out + "/stderr.txt");
       }
       if (row.status == 0) {
