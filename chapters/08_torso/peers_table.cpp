@@ -26,6 +26,7 @@
 #include "../command_line.hpp"
 #include "../formatting.hpp"
 #include "peer_run.hpp"
+#include "run_stats.hpp"
 
 #include <gjkx/timewarp/body.hpp>
 #include <gjkx/timewarp/scene.hpp>
@@ -41,6 +42,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,45 +87,9 @@ void runCommand(const std::string& command, int& status) {
   status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
-/// A run's frames.csv read back: the columns every runner writes (gjkx_simulate's and the
-/// peers' frames.csv share them: time, wall_s, max_penetration, tunnelled, checks_s).
-struct FramesRead {
-  int frames = 0;             ///< rows
-  double simulated = 0;       ///< the last frame's time
-  double wall = 0;            ///< the sum of wall_s
-  double checks = 0;          ///< the sum of checks_s
-  double penetration = 0;     ///< the largest max_penetration
-  long tunnelled = 0;         ///< the sum of tunnelled
-};
-
-/// Reads `path` (a frames.csv); throws std::runtime_error naming the file and the column.
-FramesRead readFrames(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read");
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = chapter::csvFields(line);
-  auto column = [&](const char* name) {
-    const auto k = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
-    if (k == names.size()) throw std::runtime_error(path + ": no column '" + name + "'");
-    return k;
-  };
-  const std::size_t time = column("time"), wall = column("wall_s"), penetration = column("max_penetration"),
-                    tunnelled = column("tunnelled"), checks = column("checks_s");
-  FramesRead r;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const std::vector<std::string> f = chapter::csvFields(line);
-    if (f.size() != names.size()) throw std::runtime_error(path + ": a row of " + std::to_string(f.size()) + " cells");
-    ++r.frames;
-    r.simulated = std::stod(f[time]);
-    r.wall += std::stod(f[wall]);
-    r.checks += std::stod(f[checks]);
-    r.penetration = std::max(r.penetration, std::stod(f[penetration]));
-    r.tunnelled += std::lround(std::stod(f[tunnelled]));
-  }
-  return r;
-}
+/// The columns of frames.csv that every runner writes (gjkx_simulate's and the peers'), and
+/// this table reads.
+const std::vector<std::string> kFramesColumns = {"frame", "time", "wall_s", "max_penetration", "tunnelled", "checks_s"};
 
 /// A body's mechanical energy: kinetic plus gravity's potential of its centre of mass.
 double potential(const gjkx::WorldBody& body, const Eigen::Vector3d& centre, const Eigen::Vector3d& gravity) {
@@ -260,7 +226,7 @@ int main(int argc, char** argv) {
       bool done = false;  // --reuse: a complete run is already there
       if (reuse && std::filesystem::exists(frames)) {
         try {
-          done = readFrames(frames).frames == scene.frames;
+          done = int(torso::readRun(out, kFramesColumns).frames()) == scene.frames;
         } catch (const std::exception&) {
           done = false;
         }
@@ -276,14 +242,20 @@ int main(int argc, char** argv) {
       }
       if (row.status == 0) {
         try {
-          const FramesRead f = readFrames(frames);
-          if (f.frames != scene.frames)
-            throw std::runtime_error(frames + ": " + std::to_string(f.frames) + " frames of " + std::to_string(scene.frames));
-          row.simulated = f.simulated;
+          const torso::Run run = torso::readRun(out, kFramesColumns);
+          if (int(run.frames()) != scene.frames)
+            throw std::runtime_error(frames + ": " + std::to_string(run.frames()) + " frames of " +
+                                     std::to_string(scene.frames));
+          const auto sum = [&](const char* name) {
+            const std::vector<double>& values = run.at(name);
+            return std::accumulate(values.begin(), values.end(), 0.0);
+          };
+          row.simulated = run.at("time").back();
           // gjkx_simulate's wall_s holds its checks; a peer's leaves them out.
-          row.wall = sim.program == "gjkx_simulate" ? f.wall - f.checks : f.wall;
-          row.penetration = f.penetration;
-          row.tunnelled = f.tunnelled;
+          row.wall = sim.program == "gjkx_simulate" ? sum("wall_s") - sum("checks_s") : sum("wall_s");
+          const std::vector<double>& depth = run.at("max_penetration");
+          row.penetration = std::max(0.0, *std::max_element(depth.begin(), depth.end()));
+          row.tunnelled = std::lround(sum("tunnelled"));
           std::tie(row.energyDrift, row.energyRise) = energyDrift(scene, out + "/bodies.csv");
         } catch (const std::exception& e) {
           std::cerr << "gjkx_peers_table: " << row.command << ": " << e.what() << "\n";

@@ -110,10 +110,11 @@ inline const std::vector<std::string>& requiredColumns() {
   return names;
 }
 
-/// Reads FOLDER/frames.csv (and FOLDER/summary.txt if present). Throws std::runtime_error
-/// naming the file, and the column or line, for a missing file, a missing column, a
-/// malformed number or a run without frames.
-inline Run readRun(const std::string& folder) {
+/// Reads FOLDER/frames.csv (and FOLDER/summary.txt if present), whose columns must include
+/// `required` (gjkx_simulate's, by default; a peer's runner writes fewer). Throws
+/// std::runtime_error naming the file, and the column or line, for a missing file, a
+/// missing column, a malformed number or a run without frames.
+inline Run readRun(const std::string& folder, const std::vector<std::string>& required = requiredColumns()) {
   Run run;
   run.folder = folder;
   const std::string path = folder + "/frames.csv";
@@ -122,7 +123,7 @@ inline Run readRun(const std::string& folder) {
   std::string line;
   std::getline(in, line);
   const std::vector<std::string> names = chapter::csvFields(line);
-  for (const std::string& name : requiredColumns())
+  for (const std::string& name : required)
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw std::runtime_error(path + ": no column '" + name + "' (a frames.csv of an older gjkx_simulate? run it again)");
   for (int row = 2; std::getline(in, line); ++row) {
