@@ -317,18 +317,19 @@ TEST_CASE("world: a box pivoting on one edge off the floor brings its other edge
   const double a = 0.1, tol = 0.000345267, tilt = M_PI / 180;
   const Eigen::Matrix3d R = Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Vector3d edgeA(0, -a, -a);
-  Eigen::Vector3d centre(0, 0, 0.5 * tol - (R * edgeA).z());  // A half a tolerance above z = 0
+  const Eigen::Vector3d centre(0, 0, 0.5 * tol - (R * edgeA).z());  // A half a tolerance above z = 0
   const Eigen::Vector3d w(-16, 0, 0);                          // B goes down, A stays (about A)
   const Eigen::Vector3d v = w.cross(-R * edgeA) + Eigen::Vector3d(0, 0, 0.1);  // A leaves at 0.1 m/s
   const Eigen::Quaterniond q(R);
   const auto vec = [](const Eigen::Vector3d& x) {
-    return "[" + std::to_string(x.x()) + ", " + std::to_string(x.y()) + ", " + std::to_string(x.z()) + "]";
+    char text[128];
+    std::snprintf(text, sizeof text, "[%.17g, %.17g, %.17g]", x.x(), x.y(), x.z());
+    return std::string(text);
   };
+  char orientation[128];
+  std::snprintf(orientation, sizeof orientation, "[%.17g, %.17g, %.17g, %.17g]", q.w(), q.x(), q.y(), q.z());
+  const std::string position = vec(centre);
   for (const char* contact : {"microcollisions", "hybrid"}) {
-    char orientation[128];
-    std::snprintf(orientation, sizeof orientation, "[%.17g, %.17g, %.17g, %.17g]", q.w(), q.x(), q.y(), q.z());
-    char position[128];
-    std::snprintf(position, sizeof position, "[0, 0, %.17g]", centre.z());
     const Scene scene = parseScene(R"({ "duration": 0.0833333333, "collision_tolerance": )" + std::to_string(tol) +
                                    R"(, "restitution": 0.5, "contact": ")" + contact + R"(",
         "bodies": [ { "name": "floor", "shape": {"box": [2, 2, 0.1]}, "position": [0, 0, -0.1], "static": true },

@@ -189,6 +189,11 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
   bool inWindow = false;    // the next query checks a skipped window
   double band = tolerance;  // the band of the next query: the tolerance, or a window's
   double windowEnd = t1;    // the end of the next query: t1, or the window's
+  const auto leaveWindow = [&] {
+    inWindow = false;
+    band = tolerance;
+    windowEnd = t1;
+  };
   while (t0 < t1) {
     ToiResult<double> r;
     {
@@ -220,9 +225,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     if (clear) {
       if (windowEnd >= t1) return false;
       t0 = windowEnd;  // the window is clear: on with the tolerance to t1
-      windowEnd = t1;
-      band = tolerance;
-      inWindow = false;
+      leaveWindow();
       continue;
     }
     hit.time = r.time;
@@ -263,11 +266,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     const double look = std::clamp(leave, tuning.minLookAhead * frameLength, tuning.maxLookAhead * frameLength);
     if (inWindow) {  // within a window: on by the look-ahead, to the window's end at most
       t0 = std::min(windowEnd, hit.time + look);
-      if (t0 >= windowEnd) {  // the window is covered
-        windowEnd = t1;
-        band = tolerance;
-        inWindow = false;
-      }
+      if (t0 >= windowEnd) leaveWindow();  // the window is covered
     } else if (r.distance > tuning.windowBand * tolerance) {  // the window, asked with half the distance
       // (A pair the query found within its band may be farther apart in double, where the
       // distance is taken: the window's band is never wider than the query's.)
