@@ -33,6 +33,7 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   contactGroups += o.contactGroups;
   energyRises += o.energyRises;
   contactSweeps += o.contactSweeps;
+  landings += o.landings;
   sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
@@ -87,6 +88,7 @@ const std::vector<FrameColumn>& frameColumns() {
       {"sleeping", [](const FrameReport& r) { return double(r.counters.sleeping); }, true},
       {"contacts_s", [](const FrameReport& r) { return r.parts.contacts; }, false},
       {"cpu_s", [](const FrameReport& r) { return r.cpuSeconds; }, false},
+      {"landings", [](const FrameReport& r) { return double(r.counters.landings); }, true},
   };
   return columns;
 }

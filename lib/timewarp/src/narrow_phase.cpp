@@ -261,7 +261,11 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     // Approaching: a collision. Two bodies at rest against each other (a caught body, see
     // response.hpp) approach by round-off (4e-16 m/s), and an impulse cannot change that:
     // they are taken as at rest, and looked at again once gravity has moved them.
-    if (vn < -tuning.approachSpeed) return true;
+    if (vn < -tuning.approachSpeed) {
+      if (!landsAsContact(step, i, pi, j, pj, hit.time, t1, tolerance, vn)) return true;
+      ++c.landings;  // nearer than the tolerance but never than s*: the next contact solve's
+      return false;
+    }
     const double leave = step.scene.collisionTolerance / std::max(vn, 1e-12);
     const double look = std::clamp(leave, tuning.minLookAhead * frameLength, tuning.maxLookAhead * frameLength);
     if (inWindow) {  // within a window: on by the look-ahead, to the window's end at most
@@ -279,6 +283,28 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     }
   }
   return false;
+}
+
+template <typename S>
+bool NarrowPhase<S>::landsAsContact(StepContext& step, int i, int pi, int j, int pj, double tc, double t1,
+                                    double tolerance, double vn) {
+  const StepTuning& tuning = step.settings.tuning;
+  // Only a pair the solver does not hold yet (a contact pair is checked with a narrower band),
+  // on paths that reach the interval's end (the next solve's start).
+  if (!step.hybrid() || tolerance != step.scene.collisionTolerance || t1 < step.intervalEnd) return false;
+  // Faster than the contact speed the next solve would take it for a collision all the same.
+  const double dt = step.intervalEnd - step.intervalStart;
+  if (dt <= 0 || vn < -tuning.contactSpeed * step.scene.gravity.norm() * dt) return false;
+  if (tc >= step.intervalEnd) return true;  // met at the very end: the next solve's start
+  // The rest of the interval, asked with the rest separation as the band: proven clear, the
+  // pair ends the interval no nearer than where the solver brings contacts to rest.
+  ToiResult<double> r;
+  {
+    PartTimer timer(step.frame.report.parts.collisionDetection);
+    r = query(step, i, pi, j, pj, tc, t1, step.band(tuning.restSeparation));
+  }
+  ++step.frame.report.counters.collisionChecks;
+  return r.status == ToiStatus::NoCollision || r.status == ToiStatus::Separating || r.status == ToiStatus::PhotoFinish;
 }
 
 template <typename S>

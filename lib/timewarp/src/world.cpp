@@ -150,6 +150,7 @@ FrameReport World::step() {
             for (int k = 0; k < intervals && !step.abandoned(); ++k) {
               const double ta = k == 0 ? T0 : T0 + (T1 - T0) * k / intervals;
               const double tb = k + 1 == intervals ? T1 : T0 + (T1 - T0) * (k + 1) / intervals;
+              step.intervalStart = ta;
               step.intervalEnd = tb;
               // The hybrid model: the resting contacts are solved first, their bodies' paths
               // set over the interval; the ordering then finds the collisions.

@@ -43,6 +43,7 @@ struct FrameCounters {
   long contactSweeps = 0;       ///< sweeps of the contact solver over its groups' points
   long energyRises = 0;         ///< group solves whose kinetic energy rose (must stay 0; contact_solver.hpp)
   long sleeping = 0;            ///< bodies asleep at the frame's end
+  long landings = 0;            ///< hybrid: pairs that met slowly inside an interval, left to the next one's contact solve (narrow_phase.hpp)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 

@@ -114,6 +114,7 @@ struct StepContext {
   /// The hybrid's manifolds of the last solve, with their impulses (warm start).
   ContactCache& contactCache;
   double intervalEnd = 0;  ///< the end of the interval an ordering runs (a collision flies its bodies on to it)
+  double intervalStart = 0;  ///< the start of that interval (the hybrid's contact solve is at it)
 
   /// The scene's collision tolerance times `multiple` (StepTuning's multiples).
   double band(double multiple) const { return multiple * scene.collisionTolerance; }
