@@ -10,7 +10,7 @@ std::vector<std::pair<int, int>> candidatePairs(StepContext& step, double t0, do
   const std::vector<WorldBody>& bodies = step.bodies;
   std::vector<Bounds> boxes(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    boxes[b] = sweptBounds(bodies[b], bodies[b].path, t0, t1, step.scene.gravity);
+    boxes[b] = sweptBounds(bodies[b], bodies[b].path, t0, pathEnd(step, int(b), t1), step.scene.gravity);
     boxes[b].inflate(step.scene.collisionTolerance);
   }
   return overlappingPairs(boxes, [&](int i, int j) {

@@ -49,6 +49,18 @@ bool fly(StepContext& step, int b, double t0, double t1) {
   return flyFrom(step, b, renormalized(step.bodies[b].path.stateAt(t0)), t0, t1);
 }
 
+double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1) {
+  const double spin = state.angularVelocity.norm();
+  if (!step.ownSteps || !(spin > 0)) return t1;
+  const double minPath = step.settings.tuning.minPath / step.scene.frameRate;
+  return std::min(t1, t0 + std::max(0.25 * M_PI / spin, minPath));
+}
+
+double pathEnd(const StepContext& step, int b, double t1) {
+  const WorldBody& body = step.bodies[b];
+  return body.rigid.isStatic() ? t1 : std::min(t1, body.path.t1);
+}
+
 bool flyAll(StepContext& step, double t0, double t1) {
   for (std::size_t b = 0; b < step.bodies.size(); ++b) {
     const WorldBody& body = step.bodies[b];
@@ -57,7 +69,8 @@ bool flyAll(StepContext& step, double t0, double t1) {
       if (step.frame.paths[b].empty()) step.frame.paths[b].push_back({body.path, t1});
       continue;
     }
-    if (!fly(step, int(b), t0, t1)) return false;
+    const BodyState state = renormalized(body.path.stateAt(t0));
+    if (!flyFrom(step, int(b), state, t0, ownStepEnd(step, state, t0, t1))) return false;
   }
   return true;
 }

@@ -7,8 +7,13 @@
 #include <algorithm>
 #include <functional>
 #include <queue>
+#include <tuple>
 
 namespace gjkx {
+
+bool ownStepsOf(const Scene& scene) {
+  return scene.run.ordering == Ordering::Timewarp && scene.run.contact == ContactModel::Hybrid;
+}
 
 long eventCapOf(const StepContext& step) {
   return step.settings.tuning.eventCap + step.settings.tuning.eventCapPerBody * long(step.bodies.size());
@@ -23,20 +28,42 @@ template <typename S>
 void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1) {
   std::vector<WorldBody>& bodies = step.bodies;
   FrameState& frame = step.frame;
-  // Every body runs ahead to the interval's end on its own: its local time is T1.
+  // Every body runs ahead to the interval's end on its own: its local time is T1. Under the
+  // hybrid, a body spinning fast runs a quarter turn at a time (a path holds less than half a
+  // turn): where its step ends, before T1, is an event of its own, where it flies on (a
+  // *step end*). (Under microcollisions the frame is cut into quarter turns of the fastest
+  // body instead, world.cpp: there resting contact is collisions, and each checks its
+  // bodies' pairs again to the interval's end; short intervals keep that short.)
+  step.ownSteps = ownStepsOf(step.scene);
   if (!flyAll(step, T0, T1)) return;
+  struct StepEnd {
+    double time;  // where the body's path ends
+    int body;
+    int version;  // the path's: a body flown again meanwhile has a new step end
+    bool operator>(const StepEnd& o) const { return std::tie(time, body) > std::tie(o.time, o.body); }
+  };
+  std::priority_queue<StepEnd, std::vector<StepEnd>, std::greater<StepEnd>> stepEnds;
+  const auto stepEndOf = [&](int b) {
+    if (!bodies[b].rigid.isStatic() && bodies[b].path.t1 < T1) stepEnds.push({bodies[b].path.t1, b, bodies[b].version});
+  };
+  for (std::size_t b = 0; b < bodies.size(); ++b) stepEndOf(int(b));
+  // A pair is checked as far as both its bodies' paths reach.
+  const auto check = [&](int i, int j, double t0, Hit& hit) {
+    const double t1 = std::min(pathEnd(step, i, T1), pathEnd(step, j, T1));
+    return t1 > t0 && narrow.checkPair(step, i, j, t0, t1, hit);
+  };
   std::priority_queue<Hit, std::vector<Hit>, std::greater<Hit>> queue;
   {
     Hit hit;
     for (const auto& [i, j] : candidatePairs(step, T0, T1))
-      if (narrow.checkPair(step, i, j, T0, T1, hit)) queue.push(hit);
+      if (check(i, j, T0, hit)) queue.push(hit);
   }
   // The swept bounds stay valid for every body a collision leaves alone: only the bodies
   // its impulses struck (its two, and those the instant pass reached) get new ones (from
   // t_c), and only their pairs are looked at.
   std::vector<Bounds> boxes(bodies.size());
   const auto sweep = [&](int b, double t0) {
-    boxes[b] = sweptBounds(bodies[b], bodies[b].path, t0, T1, step.scene.gravity);
+    boxes[b] = sweptBounds(bodies[b], bodies[b].path, t0, pathEnd(step, b, T1), step.scene.gravity);
     boxes[b].inflate(step.scene.collisionTolerance);
   };
   {
@@ -57,7 +84,21 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
   };
   FrameCounters& c = frame.report.counters;
   const long cap = eventCapOf(step);
-  while (!queue.empty()) {
+  while (!queue.empty() || !stepEnds.empty()) {
+    // A step end before the earliest collision: the body flies on from it, and its pairs are
+    // checked again from there (the collisions of its last step are all taken by now).
+    if (!stepEnds.empty() && (queue.empty() || stepEnds.top().time < queue.top().time)) {
+      const StepEnd end = stepEnds.top();
+      stepEnds.pop();
+      if (end.version != bodies[end.body].version) continue;  // flown again since
+      if (!fly(step, end.body, end.time, ownStepEnd(step, bodies[end.body].path.stateAt(end.time), end.time, T1)))
+        return;
+      stepEndOf(end.body);
+      Hit next;
+      for (const auto& [i, j] : pairsOf({end.body}, end.time))
+        if (check(i, j, end.time, next)) queue.push(next);
+      continue;
+    }
     Hit hit;
     {
       PartTimer timer(frame.report.parts.ordering);
@@ -72,10 +113,11 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
     if (std::max(bodies[hit.i].path.t1, bodies[hit.j].path.t1) > hit.time) ++c.rollbacks;
     const std::vector<int> struck = resolve(step, hit);
     if (step.abandoned()) return;
+    for (int b : struck) stepEndOf(b);
     // ... and re-checks only the pairs that touch the bodies it struck, from t_c on.
     Hit next;
     for (const auto& [i, j] : pairsOf(struck, hit.time))
-      if (narrow.checkPair(step, i, j, hit.time, T1, next)) queue.push(next);
+      if (check(i, j, hit.time, next)) queue.push(next);
   }
 }
 

@@ -96,9 +96,13 @@ FrameReport World::step() {
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
   // each a quarter turn of the fastest body at most.
+  // Under Timewarp and the hybrid a body in free flight takes steps of its own instead
+  // (timewarp.hpp): only the group bodies, flown by the contact solver over whole intervals, count.
+  const bool ownSteps = ownStepsOf(scene_);
   double fastest = 0;
   for (const WorldBody& body : bodies_)
-    if (!body.rigid.isStatic()) fastest = std::max(fastest, body.path.end.angularVelocity.norm());
+    if (!body.rigid.isStatic() && (!ownSteps || body.contactFlight))
+      fastest = std::max(fastest, body.path.end.angularVelocity.norm());
   const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / (0.25 * M_PI), 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
   // collision until the next, so under gravity its frames are cut into

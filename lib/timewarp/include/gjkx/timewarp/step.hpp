@@ -115,6 +115,9 @@ struct StepContext {
   ContactCache& contactCache;
   double intervalEnd = 0;  ///< the end of the interval an ordering runs (a collision flies its bodies on to it)
   double intervalStart = 0;  ///< the start of that interval (the hybrid's contact solve is at it)
+  /// Set by Timewarp (timewarp.hpp): a body spinning fast flies in steps of its own, each a
+  /// quarter turn at most, instead of the whole interval (ownStepEnd).
+  bool ownSteps = false;
 
   /// The scene's collision tolerance times `multiple` (StepTuning's multiples).
   double band(double multiple) const { return multiple * scene.collisionTolerance; }
@@ -171,8 +174,16 @@ bool flyFrom(StepContext& step, int b, const BodyState& state, double t0, double
 /// frame (response.hpp's instant pass looks at them again). Kept for the moving body or
 /// bodies only: the pass never starts from a static one (the plant would gather every contact).
 void touched(StepContext& step, int i, int pi, int j, int pj);
-/// Flies every moving body from t0 to t1 (those already flown from t0 past t1 keep their
-/// path); false on a spin overflow.
+/// Where a path of the body in `state` that starts at t0 ends, towards t1: t1, or under
+/// Timewarp's own steps (StepContext::ownSteps) a quarter turn at the body's angular speed
+/// if that comes sooner (never shorter than StepTuning::minPath). A path holds less than
+/// half a turn (motion.hpp): a body spinning faster flies on in steps of its own rather than
+/// cutting every body's interval (world.cpp).
+double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1);
+/// The end of body b's current path that a check may use, at most t1 (a static body: t1).
+double pathEnd(const StepContext& step, int b, double t1);
+/// Flies every moving body from t0 to t1, or to its own step's end (ownStepEnd); those
+/// already flown from t0 past t1 keep their path. False on a spin overflow.
 bool flyAll(StepContext& step, double t0, double t1);
 
 }  // namespace gjkx
