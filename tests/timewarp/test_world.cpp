@@ -472,6 +472,9 @@ TEST_CASE("world: a step's tunables are checked by name before the bodies are bu
   settings = {};
   settings.tuning.maxSpinIntervals = 8;  // fewer than maxIntervals
   CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.maxSpinIntervals"));
+  settings = {};
+  settings.tuning.struckStep = 0;  // a step of no length would never end
+  CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.struckStep"));
 }
 
 TEST_CASE("world: a frame past the event cap ends with its status, counted, not with an exception") {

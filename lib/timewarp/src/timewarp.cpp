@@ -105,7 +105,16 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
       hit = queue.top();
       queue.pop();
     }
-    if (++c.events > cap) return reachEventCap(step);
+    if (++c.events > cap) {
+      // The remaining events are dropped; the bodies whose steps end before T1 fly on to it
+      // unchecked, so that the next interval starts where every path reaches.
+      for (std::size_t b = 0; b < bodies.size(); ++b)
+        while (!bodies[b].rigid.isStatic() && bodies[b].path.t1 < T1) {
+          const double t = bodies[b].path.t1;
+          if (!fly(step, int(b), t, ownStepEnd(step, bodies[b].path.stateAt(t), t, T1))) return;
+        }
+      return reachEventCap(step);
+    }
     // Stale: computed on a path that a later-processed, earlier collision replaced.
     if (hit.versionI != bodies[hit.i].version || hit.versionJ != bodies[hit.j].version) continue;
     // The collision rolls back only the bodies it strikes (their local time was T1): its
