@@ -183,8 +183,10 @@ bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const 
   GjkResult<double> g;
   {
     PartTimer timer(step.frame.report.parts.collisionDetection);
+    GjkCache<double>* cache =
+        step.settings.warmStarts ? &step.frame.contactCoherence[step.piecePairKey(i, pi, j, pj)] : nullptr;
     g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
-            Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody});
+            Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, {}, cache);
   }
   if (g.status != GjkStatus::Overlapping && g.distance > step.scene.collisionTolerance) return false;
   contactFromGjk(step, g, i, pi, j, pj, t, si, sj, hit);

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <gjkx/dynamics/free_flight.hpp>
+#include <gjkx/gjk/gjk.hpp>
 #include <gjkx/dynamics/impulse.hpp>
 #include <gjkx/dynamics/swept_bounds.hpp>
 #include <gjkx/timewarp/body.hpp>
@@ -28,6 +29,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace gjkx {
@@ -91,6 +93,11 @@ struct FrameState {
   std::vector<std::pair<int, int>> contactPairs;
   /// The hybrid model's contact groups of the last interval (contact_solver.hpp).
   std::vector<std::vector<int>> groups;
+  /// Per piece pair (StepContext::piecePairKey), the simplex its last contact query ended on
+  /// (contact.hpp's contactAt): the instant pass asks the same contacts again at every
+  /// collision that reaches them, and GJK warm-started from there (§2.2's coherence) takes
+  /// an iteration or two where a cold run climbs every piece from scratch.
+  std::unordered_map<std::uint64_t, GjkCache<double>> contactCoherence;
   /// True if bodies i and j (any order) are a contact pair of the hybrid model.
   bool isContactPair(int i, int j) const {
     return std::binary_search(contactPairs.begin(), contactPairs.end(), std::make_pair(std::min(i, j), std::max(i, j)));
