@@ -58,6 +58,7 @@ struct Row {
   double penetration = 0;                ///< deepest penetration at a frame's end (m)
   long tunnelled = 0;                    ///< pairs tunnelled
   double energyDrift = 0, energyRise = 0;  ///< J: end less start; largest rise above the start
+  bool reused = false;                   ///< read from an earlier run in WORK (--reuse), not run now
 };
 
 /// The last line of a file (empty if none): a failed program's reason.
@@ -154,11 +155,13 @@ std::string table(const std::vector<Row>& rows, double duration, const std::stri
        << format("%.3g mm", 1000 * r.penetration) << " | " << r.tunnelled << " | "
        << format("%.4g J", r.energyDrift) << format(" (%.3g J)", r.energyRise) << " |\n";
   }
+  const bool anyReused = std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.reused; });
   md << "\nOne run each, one after the other, on one core of a shared 2-core machine";
+  if (anyReused) md << " (those marked *earlier* were read from runs made before, with `--reuse`; the load is this call's)";
   if (duration > 0) md << format("; scenes longer than %g s cut to it", duration);
   md << " (its load averages over 1, 5 and 15 minutes: " << load
      << "; wall times grow with the load, the other columns do not). Runs:\n\n";
-  for (const Row& r : rows) md << "- `" << r.command << "`\n";
+  for (const Row& r : rows) md << "- `" << r.command << "`" << (r.reused ? " (*earlier*)" : "") << "\n";
   md << "\nMade by `" << command << "`.\n";
   return md.str();
 }
@@ -231,6 +234,7 @@ int main(int argc, char** argv) {
           done = false;
         }
       }
+      row.reused = done;
       if (!done) {
         std::cerr << "gjkx_peers_table: " << row.command << "\n";
         std::filesystem::remove_all(out);
