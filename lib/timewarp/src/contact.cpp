@@ -184,7 +184,7 @@ bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const 
   {
     PartTimer timer(step.frame.report.parts.collisionDetection);
     GjkCache<double>* cache =
-        step.settings.warmStarts ? &step.frame.contactCoherence[step.piecePairKey(i, pi, j, pj)] : nullptr;
+        step.warmStarts() ? &step.frame.contactCoherence[step.piecePairKey(i, pi, j, pj)] : nullptr;
     g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
             Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, {}, cache);
   }

@@ -74,7 +74,7 @@ ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j,
   const Moving<Shape<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
   // The paper's solver (asked for by the scene or the world's settings) runs the paper's
   // test with every refinement off; ours takes the world's variant and warm starts.
-  const bool paper = step.settings.solver == ToiSolverMode::Paper || step.scene.run.solver == ToiSolverMode::Paper;
+  const bool paper = step.paperSolver();
   ToiSettings<S> settings = paper ? ToiSettings<S>::paper() : ToiSettings<S>::gjkx();
   settings.collisionTolerance = S(tolerance);
   if (!paper) settings.variant = step.settings.variant;

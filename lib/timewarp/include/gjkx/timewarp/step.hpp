@@ -141,6 +141,12 @@ struct StepContext {
   }
   /// True when the scene's resting contact is the hybrid model (contact_solver.hpp).
   bool hybrid() const { return scene.run.contact == ContactModel::Hybrid; }
+  /// True when §5 runs exactly as the paper wrote it (the world's or the scene's solver):
+  /// none of this project's warm starts.
+  bool paperSolver() const { return settings.solver == ToiSolverMode::Paper || scene.run.solver == ToiSolverMode::Paper; }
+  /// True when queries may start from where the same piece pair's last one ended (§2.2):
+  /// the world's warm starts on and the solver not the paper's.
+  bool warmStarts() const { return settings.warmStarts && !paperSolver(); }
   /// Records a trace event when tracing.
   void record(TraceEvent::Kind kind, int body, int other, double from, double to) {
     if (settings.trace) trace.push_back({kind, body, other, from, to});
