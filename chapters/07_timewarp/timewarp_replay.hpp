@@ -65,7 +65,7 @@ void replayFrames(const gjkx::Scene& scene, const gjkx::WorldSettings& settings,
     for (const gjkx::WorldBody& b : bodies) {
       out.start.push_back(b.path.stateAt(T0));
       // One interval a frame holds a quarter turn of the fastest body (world.cpp).
-      if (!b.rigid.isStatic() && b.path.end.angularVelocity.norm() * (T1 - T0) > 0.25 * M_PI)
+      if (!b.rigid.isStatic() && b.path.end.angularVelocity.norm() * (T1 - T0) > gjkx::quarterTurn)
         throw std::runtime_error("body '" + b.name + "' spins too fast for one interval a frame (the replay shows slow scenes)");
     }
     gjkx::FrameState frame(bodies.size());

@@ -262,7 +262,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     // response.hpp) approach by round-off (4e-16 m/s), and an impulse cannot change that:
     // they are taken as at rest, and looked at again once gravity has moved them.
     if (vn < -tuning.approachSpeed) {
-      if (!landsAsContact(step, i, pi, j, pj, hit.time, t1, tolerance, vn)) return true;
+      if (!landsAsContact(step, i, pi, j, pj, hit.time, t1, vn)) return true;
       ++c.landings;  // nearer than the tolerance but never than s*: the next contact solve's
       return false;
     }
@@ -287,11 +287,11 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
 
 template <typename S>
 bool NarrowPhase<S>::landsAsContact(StepContext& step, int i, int pi, int j, int pj, double tc, double t1,
-                                    double tolerance, double vn) {
+                                    double vn) {
   const StepTuning& tuning = step.settings.tuning;
   // Only a pair the solver does not hold yet (a contact pair is checked with a narrower band),
   // on paths that reach the interval's end (the next solve's start).
-  if (!step.hybrid() || tolerance != step.scene.collisionTolerance || t1 < step.intervalEnd) return false;
+  if (!step.hybrid() || step.frame.isContactPair(i, j) || t1 < step.intervalEnd) return false;
   // Faster than the contact speed the next solve would take it for a collision all the same.
   const double dt = step.intervalEnd - step.intervalStart;
   if (dt <= 0 || vn < -tuning.contactSpeed * step.scene.gravity.norm() * dt) return false;

@@ -49,11 +49,20 @@ bool fly(StepContext& step, int b, double t0, double t1) {
   return flyFrom(step, b, renormalized(step.bodies[b].path.stateAt(t0)), t0, t1);
 }
 
+bool ownStepsOf(const Scene& scene) {
+  return scene.run.ordering == Ordering::Timewarp && scene.run.contact == ContactModel::Hybrid;
+}
+
 double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1) {
   const double spin = state.angularVelocity.norm();
-  if (!step.ownSteps || !(spin > 0)) return t1;
+  if (!step.ownSteps() || !(spin > 0)) return t1;
   const double minPath = step.settings.tuning.minPath / step.scene.frameRate;
-  return std::min(t1, t0 + std::max(0.25 * M_PI / spin, minPath));
+  return std::min(t1, t0 + std::max(quarterTurn / spin, minPath));
+}
+
+bool flyOwnStep(StepContext& step, int b, double t0, double t1) {
+  const BodyState state = renormalized(step.bodies[b].path.stateAt(t0));
+  return flyFrom(step, b, state, t0, ownStepEnd(step, state, t0, t1));
 }
 
 double pathEnd(const StepContext& step, int b, double t1) {
@@ -69,8 +78,7 @@ bool flyAll(StepContext& step, double t0, double t1) {
       if (step.frame.paths[b].empty()) step.frame.paths[b].push_back({body.path, t1});
       continue;
     }
-    const BodyState state = renormalized(body.path.stateAt(t0));
-    if (!flyFrom(step, int(b), state, t0, ownStepEnd(step, state, t0, t1))) return false;
+    if (!flyOwnStep(step, int(b), t0, t1)) return false;
   }
   return true;
 }

@@ -11,10 +11,6 @@
 
 namespace gjkx {
 
-bool ownStepsOf(const Scene& scene) {
-  return scene.run.ordering == Ordering::Timewarp && scene.run.contact == ContactModel::Hybrid;
-}
-
 long eventCapOf(const StepContext& step) {
   return step.settings.tuning.eventCap + step.settings.tuning.eventCapPerBody * long(step.bodies.size());
 }
@@ -34,7 +30,6 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
   // *step end*). (Under microcollisions the frame is cut into quarter turns of the fastest
   // body instead, world.cpp: there resting contact is collisions, and each checks its
   // bodies' pairs again to the interval's end; short intervals keep that short.)
-  step.ownSteps = ownStepsOf(step.scene);
   if (!flyAll(step, T0, T1)) return;
   struct StepEnd {
     double time;  // where the body's path ends
@@ -91,8 +86,7 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
       const StepEnd end = stepEnds.top();
       stepEnds.pop();
       if (end.version != bodies[end.body].version) continue;  // flown again since
-      if (!fly(step, end.body, end.time, ownStepEnd(step, bodies[end.body].path.stateAt(end.time), end.time, T1)))
-        return;
+      if (!flyOwnStep(step, end.body, end.time, T1)) return;
       stepEndOf(end.body);
       Hit next;
       for (const auto& [i, j] : pairsOf({end.body}, end.time))
@@ -109,10 +103,8 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
       // The remaining events are dropped; the bodies whose steps end before T1 fly on to it
       // unchecked, so that the next interval starts where every path reaches.
       for (std::size_t b = 0; b < bodies.size(); ++b)
-        while (!bodies[b].rigid.isStatic() && bodies[b].path.t1 < T1) {
-          const double t = bodies[b].path.t1;
-          if (!fly(step, int(b), t, ownStepEnd(step, bodies[b].path.stateAt(t), t, T1))) return;
-        }
+        while (!bodies[b].rigid.isStatic() && bodies[b].path.t1 < T1)
+          if (!flyOwnStep(step, int(b), bodies[b].path.t1, T1)) return;
       return reachEventCap(step);
     }
     // Stale: computed on a path that a later-processed, earlier collision replaced.

@@ -103,7 +103,7 @@ FrameReport World::step() {
   for (const WorldBody& body : bodies_)
     if (!body.rigid.isStatic() && (!ownSteps || body.contactFlight))
       fastest = std::max(fastest, body.path.end.angularVelocity.norm());
-  const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / (0.25 * M_PI), 1e6))); };
+  const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / quarterTurn, 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
   // collision until the next, so under gravity its frames are cut into
   // StepTuning::contactIntervals at least (fixed steps keep their own: `fixed_substeps` per frame).

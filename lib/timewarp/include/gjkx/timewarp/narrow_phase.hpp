@@ -60,12 +60,11 @@ class NarrowPhase {
  private:
   std::vector<PiecePair> piecePairs(StepContext& step, int i, int j, double t0, double t1);
   bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double tolerance, Hit& hit);
-  /// The hybrid's landing (docs 07): pieces pi of i and pj of j met at tc, closing at vn (< 0),
-  /// checked with `tolerance`. True if the meeting is left to the next interval's contact
-  /// solve: a pair that is not a contact pair, closing slower than the contact speed, that
-  /// the extrusion test proves stays beyond the rest separation over [tc, t1].
-  bool landsAsContact(StepContext& step, int i, int pi, int j, int pj, double tc, double t1, double tolerance,
-                      double vn);
+  /// The hybrid's landing (docs 07): pieces pi of i and pj of j met at tc, closing at vn (< 0).
+  /// True if the meeting is left to the next interval's contact solve: a pair that is not a
+  /// contact pair, closing slower than the contact speed, that the extrusion test proves
+  /// stays beyond the rest separation over [tc, t1].
+  bool landsAsContact(StepContext& step, int i, int pi, int j, int pj, double tc, double t1, double vn);
   ToiResult<double> query(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double tolerance);
   const std::vector<Shape<S>>& piecesOf(const std::vector<WorldBody>& bodies, int b) const;
   const Motion<S>& motionOf(const WorldBody& body, int b);

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -107,6 +108,16 @@ struct FrameState {
   explicit FrameState(std::size_t bodies = 0);
 };
 
+/// The most a path turns: a quarter turn (rad). A free-flight path holds less than half a
+/// turn (motion.hpp); a frame's intervals, or a body's own steps, keep to a quarter.
+constexpr double quarterTurn = 0.25 * M_PI;
+
+/// True if the scene's bodies fly in steps of their own (ownStepEnd): under Timewarp with the
+/// hybrid contact model. Under microcollisions resting contact is a train of collisions, each
+/// checking its bodies' pairs again to the interval's end, and the frame's intervals of a
+/// quarter turn of the fastest body keep those checks short.
+bool ownStepsOf(const Scene& scene);
+
 /// What the parts of a step share: the world's lasting state, and the frame being run.
 struct StepContext {
   const Scene& scene;                         ///< what is simulated
@@ -122,9 +133,6 @@ struct StepContext {
   ContactCache& contactCache;
   double intervalEnd = 0;  ///< the end of the interval an ordering runs (a collision flies its bodies on to it)
   double intervalStart = 0;  ///< the start of that interval (the hybrid's contact solve is at it)
-  /// Set by Timewarp (timewarp.hpp): a body spinning fast flies in steps of its own, each a
-  /// quarter turn at most, instead of the whole interval (ownStepEnd).
-  bool ownSteps = false;
 
   /// The scene's collision tolerance times `multiple` (StepTuning's multiples).
   double band(double multiple) const { return multiple * scene.collisionTolerance; }
@@ -141,6 +149,8 @@ struct StepContext {
   }
   /// True when the scene's resting contact is the hybrid model (contact_solver.hpp).
   bool hybrid() const { return scene.run.contact == ContactModel::Hybrid; }
+  /// True when bodies fly in steps of their own (ownStepsOf, ownStepEnd).
+  bool ownSteps() const { return ownStepsOf(scene); }
   /// True when §5 runs exactly as the paper wrote it (the world's or the scene's solver):
   /// none of this project's warm starts.
   bool paperSolver() const { return settings.solver == ToiSolverMode::Paper || scene.run.solver == ToiSolverMode::Paper; }
@@ -188,11 +198,14 @@ bool flyFrom(StepContext& step, int b, const BodyState& state, double t0, double
 /// bodies only: the pass never starts from a static one (the plant would gather every contact).
 void touched(StepContext& step, int i, int pi, int j, int pj);
 /// Where a path of the body in `state` that starts at t0 ends, towards t1: t1, or under
-/// Timewarp's own steps (StepContext::ownSteps) a quarter turn at the body's angular speed
+/// own steps (StepContext::ownSteps) a quarter turn at the body's angular speed
 /// if that comes sooner (never shorter than StepTuning::minPath). A path holds less than
 /// half a turn (motion.hpp): a body spinning faster flies on in steps of its own rather than
 /// cutting every body's interval (world.cpp).
 double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1);
+/// Flies body b on from its state at t0 in a path that ends at ownStepEnd towards t1 (see
+/// fly); false on a spin overflow.
+bool flyOwnStep(StepContext& step, int b, double t0, double t1);
 /// The end of body b's current path that a check may use, at most t1 (a static body: t1).
 double pathEnd(const StepContext& step, int b, double t1);
 /// Flies every moving body from t0 to t1, or to its own step's end (ownStepEnd); those

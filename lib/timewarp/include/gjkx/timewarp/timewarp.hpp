@@ -42,12 +42,6 @@ namespace gjkx {
 template <typename S>
 void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1);
 
-/// True if the scene's bodies fly in steps of their own (StepContext::ownSteps): under
-/// Timewarp with the hybrid contact model. Under microcollisions resting contact is a train of
-/// collisions, each checking its bodies' pairs again to the interval's end, and the frame's
-/// intervals of a quarter turn of the fastest body keep those checks short.
-bool ownStepsOf(const Scene& scene);
-
 /// The event cap of one interval of a world of `bodies` bodies (StepTuning::eventCap).
 long eventCapOf(const StepContext& step);
 
