@@ -66,6 +66,14 @@ inline std::map<std::string, double> summaryKeys(const std::string& output) {
   return keys;
 }
 
+/// The whole of a file, byte for byte (empty if it cannot be read).
+inline std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 /// The rows of a CSV file (the header first), split at commas.
 inline std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& file) {
   std::ifstream in(file);

@@ -48,10 +48,8 @@ TEST_CASE("gjkx_mesh_table: a row per model, decomposed, refused with the messag
       test::runProgram(GJKX_MESH_TABLE, "--models " + models.string() + " --out " + (dir / "table.md").string());
   INFO(r.output);
   REQUIRE(r.status == 0);
-  std::ifstream in(dir / "table.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const auto rows = rowsOf(text.str());
+  const std::string text = test::readText(dir / "table.md");
+  const auto rows = rowsOf(text);
   REQUIRE(rows.size() == 3);  // in the order of their paths
   CHECK(rows[0][0] == "sub/cube.off");
   CHECK(rows[0][2] == "yes");
@@ -67,7 +65,7 @@ TEST_CASE("gjkx_mesh_table: a row per model, decomposed, refused with the messag
   CHECK(rows[2][3].rfind("refused: sub/open_box.off: the mesh is not closed", 0) == 0);
   CHECK(rows[2][7] == "hull");
   CHECK(rows[2][8] == "8");
-  CHECK_THAT(text.str(), Catch::Contains("the 3 files") && Catch::Contains("the other 1 files") && Catch::Contains("decomposed: 2;") &&
+  CHECK_THAT(text, Catch::Contains("the 3 files") && Catch::Contains("the other 1 files") && Catch::Contains("decomposed: 2;") &&
                              Catch::Contains("refused: 1)") && Catch::Contains("(its hull: 3)"));
   fs::remove_all(dir);
 }

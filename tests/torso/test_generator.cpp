@@ -5,6 +5,8 @@
 // overlap at the start).
 #include <catch2/catch.hpp>
 
+#include "../run_program.hpp"
+
 #include <gjkx/mesh/convex_decomposition.hpp>
 #include <gjkx/mesh/triangle_mesh.hpp>
 #include <gjkx/support_mapping/convex_hull.hpp>
@@ -38,12 +40,7 @@ fs::path generate(const std::string& name, const std::string& arguments = "") {
   return dir;
 }
 
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string contents(const fs::path& file) { return test::readText(file); }
 
 // The group of a bone from its name: "rib_left_3" -> "rib".
 std::string groupOf(const std::string& name) { return name.substr(0, name.find('_')); }

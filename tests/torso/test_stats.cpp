@@ -4,6 +4,8 @@
 // rate and the totals; and its refusal of a frames.csv that lacks a column.
 #include <catch2/catch.hpp>
 
+#include "../run_program.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -83,10 +85,7 @@ std::string tableOf(const fs::path& run, const std::string& label) {
   const Result r = stats(label + "=\"" + run.string() + "\" --table \"" + table.string() + "\"", run / "log.txt");
   INFO(r.output);
   REQUIRE(r.status == 0);
-  std::ifstream in(table);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::readText(table);
 }
 
 }  // namespace
