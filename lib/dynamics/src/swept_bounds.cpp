@@ -19,27 +19,34 @@ Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, con
     }
     return tight;
   }
+  // The shape's own box at both ends of [t0, t1], grown by how far any of its points can
+  // bulge off the chord between its two ends: a point p(t) whose acceleration stays below
+  // a lies within a T^2 / 8 of the chord, and the chord lies in the two end boxes' union.
+  // The path (free_flight.hpp) turns about a fixed axis at a constant rate w and falls
+  // with g, so a point within `radius` of the centre of mass has a <= |g| + w^2 radius
+  // (MotionBound::pointAcceleration).
+  const double T = t1 - t0;
   Bounds box;
-  if (path.start.angularVelocity.squaredNorm() > 0) {
-    // Turning: every orientation may occur, the sphere about the centre of mass.
-    box.add(a.worldFromBody.translation);
-    box.add(z.worldFromBody.translation);
-    box.inflate(radius);
-  } else {
-    // Not turning: the shape's own box at both ends (the box moves with the centre of mass).
-    for (const BodyState* s : {&a, &z}) {
-      const Placed<Shape<double>> placed{shape, s->worldFromBody};
-      for (int k = 0; k < 3; ++k) {
-        Eigen::Vector3d e = Eigen::Vector3d::Zero();
-        e[k] = 1;
-        box.add(Eigen::Vector3d(placed.support(e)));
-        box.add(Eigen::Vector3d(placed.support(-e)));
-      }
+  for (const BodyState* s : {&a, &z}) {
+    const Placed<Shape<double>> placed{shape, s->worldFromBody};
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      e[k] = 1;
+      box.add(Eigen::Vector3d(placed.support(e)));
+      box.add(Eigen::Vector3d(placed.support(-e)));
     }
   }
-  // The ballistic bulge of the path off its chord: |g| T^2 / 8.
-  const double T = t1 - t0;
-  box.inflate(gravity.norm() * T * T / 8);
+  box.inflate(path.motion.bound().pointAcceleration(radius) * T * T / 8);
+  if (path.start.angularVelocity.squaredNorm() > 0) {
+    // Turning far, the sphere about the centre of mass is the tighter box (each holds the
+    // body, so their overlap does): its centre at both ends, with the ballistic bulge.
+    Bounds sphere;
+    sphere.add(a.worldFromBody.translation);
+    sphere.add(z.worldFromBody.translation);
+    sphere.inflate(radius + gravity.norm() * T * T / 8);
+    box.lo = box.lo.cwiseMax(sphere.lo);
+    box.hi = box.hi.cwiseMin(sphere.hi);
+  }
   return box;
 }
 

@@ -4,9 +4,10 @@
 /// independent checks (gjkx/verify) both bound a path this way, so it is written once, here.
 ///
 /// A box is conservative: it holds the body at both ends of the interval, grown by how far
-/// the path can bulge between them (the parabola of a ballistic path bulges at most
-/// |g| T^2 / 8 from its chord) and, for a turning body, the whole sphere its points can
-/// reach. The pairs are found by sweep and prune along x (the boxes sorted by their low x,
+/// any of its points can bulge off its chord between them: a point whose acceleration stays
+/// below a lies within a T^2 / 8 of its chord (for a ballistic path turning at a constant
+/// rate w, a = |g| + w^2 r at distance r from the centre of mass). A body turning far is
+/// held by the sphere about its centre of mass as well, and gets the two boxes' overlap. The pairs are found by sweep and prune along x (the boxes sorted by their low x,
 /// each compared with those that start before it ends).
 #pragma once
 
@@ -56,9 +57,10 @@ struct PathPiece {
 
 /// The box of `shape` (body frame at the centre of mass, bounding radius `radius`) along
 /// `path` over [t0, t1]: a static body's own box at t0 (tight, its support along each
-/// axis); a turning body's centre of mass at both ends grown by its radius (every
-/// orientation may occur); a body that does not turn, its shape's box at both ends. Each
-/// moving one grown by the ballistic bulge |g| T^2 / 8 of its path off its chord.
+/// axis); a moving body's own box at both ends, grown by the bulge
+/// `path.motion.bound().pointAcceleration(radius)` T^2 / 8 of its points off their chords;
+/// for a turning body, cut down to the box of the sphere about its centre of mass at both
+/// ends (grown by the ballistic bulge |g| T^2 / 8), which holds every orientation.
 Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, const FreeFlight& path, double t0,
                    double t1, const Eigen::Vector3d& gravity);
 
