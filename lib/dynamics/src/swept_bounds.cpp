@@ -5,18 +5,30 @@
 
 namespace gjkx {
 
+namespace {
+
+/// Grows `box` to hold `shape` at `pose` (the shape's support along each axis), each climb
+/// from its hint.
+void addBoxAt(const Shape<double>& shape, const Pose<double>& pose, SweepHints& hints, Bounds& box) {
+  const Placed<Shape<double>> placed{shape, pose};
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[k] = 1;
+    box.add(Eigen::Vector3d(placed.support(e, hints[2 * k])));
+    box.add(Eigen::Vector3d(placed.support(-e, hints[2 * k + 1])));
+  }
+}
+
+}  // namespace
+
 Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, const FreeFlight& path, double t0,
-                   double t1, const Eigen::Vector3d& gravity) {
+                   double t1, const Eigen::Vector3d& gravity, SweepHints* hints) {
+  SweepHints own{};
+  SweepHints& h = hints ? *hints : own;
   const BodyState a = path.stateAt(t0), z = path.stateAt(t1);
   if (isStatic) {  // a static body's box is tight (its support along each axis), with no bulge
     Bounds tight;
-    const Placed<Shape<double>> placed{shape, a.worldFromBody};
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = 1;
-      tight.hi[k] = placed.support(e)[k];
-      tight.lo[k] = placed.support(-e)[k];
-    }
+    addBoxAt(shape, a.worldFromBody, h, tight);
     return tight;
   }
   // The shape's own box at both ends of [t0, t1], grown by how far any of its points can
@@ -27,15 +39,7 @@ Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, con
   // (MotionBound::pointAcceleration).
   const double T = t1 - t0;
   Bounds box;
-  for (const BodyState* s : {&a, &z}) {
-    const Placed<Shape<double>> placed{shape, s->worldFromBody};
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = 1;
-      box.add(Eigen::Vector3d(placed.support(e)));
-      box.add(Eigen::Vector3d(placed.support(-e)));
-    }
-  }
+  for (const BodyState* s : {&a, &z}) addBoxAt(shape, s->worldFromBody, h, box);
   box.inflate(path.motion.bound().pointAcceleration(radius) * T * T / 8);
   if (path.start.angularVelocity.squaredNorm() > 0) {
     // Turning far, the sphere about the centre of mass is the tighter box (each holds the

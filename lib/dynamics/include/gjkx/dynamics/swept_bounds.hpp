@@ -15,11 +15,15 @@
 #include <gjkx/support_mapping/shape.hpp>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
 
 namespace gjkx {
+
+/// Where the six support climbs of a body's box (along +x, -x, +y, -y, +z, -z) last ended.
+using SweepHints = std::array<SupportHint, 6>;
 
 /// An axis-aligned box in the world.
 struct Bounds {
@@ -61,8 +65,11 @@ struct PathPiece {
 /// `path.motion.bound().pointAcceleration(radius)` T^2 / 8 of its points off their chords;
 /// for a turning body, cut down to the box of the sphere about its centre of mass at both
 /// ends (grown by the ballistic bulge |g| T^2 / 8), which holds every orientation.
+/// `hints`, when given, is where the shape's support climbs along +x, -x, +y, -y, +z, -z
+/// start, and is left where they ended (a body's next box, at poses near these, then takes
+/// a step or two per climb: the answer is the same).
 Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, const FreeFlight& path, double t0,
-                   double t1, const Eigen::Vector3d& gravity);
+                   double t1, const Eigen::Vector3d& gravity, SweepHints* hints = nullptr);
 
 /// The pairs (i, j), i < j, whose boxes overlap, by sweep and prune along x. `skip(i, j)`
 /// drops a pair (two static bodies, say). Sorted by (i, j), so the order is the same in every run.

@@ -17,6 +17,7 @@
 
 #include <gjkx/dynamics/free_flight.hpp>
 #include <gjkx/dynamics/rigid_body.hpp>
+#include <gjkx/dynamics/swept_bounds.hpp>
 #include <gjkx/mesh/convex_decomposition.hpp>
 #include <gjkx/motion/motion.hpp>
 #include <gjkx/support_mapping/shape.hpp>
@@ -62,6 +63,9 @@ struct WorldBody {
   int version = 0;                            ///< bumped when its path changes: events that used the old one are stale
   /// Counts every path it is given (setPath), never reset: what a cache of the path keys on.
   long pathSerial = 0;
+  /// Where the support climbs of its last swept bounds ended (broad_phase.hpp): its next
+  /// box starts there. A cache for speed; the boxes are the same without it.
+  mutable SweepHints boundsHints{};
   /// Caught at rest against a static body (response.hpp), or settled at a frame's end
   /// with too little kinetic energy to leave the tolerance band (sleep.hpp), and not
   /// struck since: it is held where it stands, gravity off, and its pairs with static and

@@ -18,7 +18,7 @@ namespace gjkx {
 /// The swept bounds of `body` along `path` over [t0, t1] (dynamics' sweptBounds of its shape).
 inline Bounds sweptBounds(const WorldBody& body, const FreeFlight& path, double t0, double t1,
                           const Eigen::Vector3d& gravity) {
-  return sweptBounds(body.shape, body.radius, body.rigid.isStatic(), path, t0, t1, gravity);
+  return sweptBounds(body.shape, body.radius, body.rigid.isStatic(), path, t0, t1, gravity, &body.boundsHints);
 }
 
 struct StepContext;
