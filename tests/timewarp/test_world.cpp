@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -709,4 +710,36 @@ TEST_CASE("Timewarp, step by step: three balls, each body's local time, its roll
   CHECK(world.stateOf(0).velocity.x() == Approx(-0.4375).epsilon(1e-6));
   CHECK(world.stateOf(1).velocity.x() == Approx(0.1875).epsilon(1e-6));
   CHECK(world.stateOf(2).velocity.x() == Approx(0.75).epsilon(1e-6));
+}
+
+TEST_CASE("world: a tilted L dropped on the floor strikes with its lower arm, when free fall says") {
+  // An L prism (several convex pieces) tilted about x, so that one arm hangs lower. Its pair
+  // with the floor has a piece pair per piece; the pair's collision is the earliest one's,
+  // whichever is checked first (those after a hit are checked only until it). Tilted one
+  // way and the other, each arm is the lower one once.
+  const std::string data = std::string(GJKX_SCENES) + "/../../../tests/mesh/data";
+  const double g = 9.81, tilt = GENERATE(-0.3, 0.3);
+  const double c = std::cos(tilt / 2), s = std::sin(tilt / 2);
+  Scene scene = parseScene(R"({ "duration": 0.5, "friction": 0, "bodies": [
+      { "name": "floor", "shape": {"box": [3, 3, 0.5]}, "position": [0, 0, -0.5], "static": true },
+      { "name": "L", "shape": {"mesh": "l_prism.off"}, "position": [0, -1, 1.2],
+        "orientation": [)" + std::to_string(c) + ", " + std::to_string(s) + R"(, 0, 0] } ] })", "test.json");
+  scene.folder = data;
+  World world(scene);
+  const WorldBody& L = world.bodies()[1];
+  // Each piece's lowest point at the start (its support along -z).
+  std::vector<double> low;
+  for (const Shape<double>& piece : L.pieces)
+    low.push_back(Placed<Shape<double>>{piece, L.path.start.worldFromBody}.support(Eigen::Vector3d(0, 0, -1)).z());
+  const double lowest = *std::min_element(low.begin(), low.end());
+  REQUIRE(*std::max_element(low.begin(), low.end()) > lowest + 0.1);  // the tilt makes one arm clearly lower
+  while (!world.done() && world.collisionLog().empty()) world.step();
+  REQUIRE_FALSE(world.collisionLog().empty());
+  const CollisionRecord& first = world.collisionLog().front();
+  INFO("tilt " << tilt << ": the struck piece's lowest point " << low[std::size_t(first.pieceJ)] << ", the lowest "
+               << lowest);
+  CHECK(low[std::size_t(first.pieceJ)] == Approx(lowest).margin(1e-6));
+  const double fall = lowest - scene.collisionTolerance;
+  // Free fall to within the tolerance band of the floor's top (z = 0).
+  CHECK(first.time == Approx(std::sqrt(2 * fall / g)).epsilon(2e-3));
 }

@@ -160,8 +160,12 @@ bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, doubl
   Hit piece;
   const double tolerance = step.frame.isContactPair(i, j) ? step.band(step.settings.tuning.contactCheckBand)
                                                           : step.scene.collisionTolerance;
+  // Once one piece pair has a collision, the others are checked only until it: one of
+  // theirs that comes later is not the pair's (and were it needed, the collision's impulse
+  // changes a body of the pair, whose pairs are all checked again from there).
   for (const PiecePair& p : piecePairs(step, i, j, t0, t1)) {
-    if (!checkPieces(step, i, p.a, j, p.b, t0, t1, tolerance, piece)) continue;
+    const double until = found ? hit.time : t1;
+    if (until <= t0 || !checkPieces(step, i, p.a, j, p.b, t0, until, t1, tolerance, piece)) continue;
     if (!found || piece.time < hit.time) hit = piece;
     found = true;
   }
@@ -170,7 +174,7 @@ bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, doubl
 
 template <typename S>
 bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1,
-                                 double tolerance, Hit& hit) {
+                                 double pathsEnd, double tolerance, Hit& hit) {
   FrameCounters& c = step.frame.report.counters;
   const StepTuning& tuning = step.settings.tuning;
   const double frameLength = step.frameLength();
@@ -262,7 +266,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
     // response.hpp) approach by round-off (4e-16 m/s), and an impulse cannot change that:
     // they are taken as at rest, and looked at again once gravity has moved them.
     if (vn < -tuning.approachSpeed) {
-      if (!landsAsContact(step, i, pi, j, pj, hit.time, t1, vn)) return true;
+      if (!landsAsContact(step, i, pi, j, pj, hit.time, pathsEnd, vn)) return true;
       ++c.landings;  // nearer than the tolerance but never than s*: the next contact solve's
       return false;
     }

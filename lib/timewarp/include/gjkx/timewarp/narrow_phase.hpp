@@ -59,7 +59,10 @@ class NarrowPhase {
 
  private:
   std::vector<PiecePair> piecePairs(StepContext& step, int i, int j, double t0, double t1);
-  bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double tolerance, Hit& hit);
+  /// The earliest collision of pieces pi of i and pj of j in [t0, t1] within `tolerance`;
+  /// `pathsEnd` (>= t1) is where both bodies' paths end, which a landing is checked to.
+  bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double pathsEnd,
+                   double tolerance, Hit& hit);
   /// The hybrid's landing (docs 07): pieces pi of i and pj of j met at tc, closing at vn (< 0).
   /// True if the meeting is left to the next interval's contact solve: a pair that is not a
   /// contact pair, closing slower than the contact speed, that the extrusion test proves
