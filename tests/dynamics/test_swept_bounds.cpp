@@ -70,3 +70,20 @@ TEST_CASE("the swept box of a slowly turning bar is its own box, not the sphere 
   CHECK(swept.hi.x() - swept.lo.x() < 1.01);
   CHECK(swept.hi.z() - swept.lo.z() < 0.041);
 }
+
+TEST_CASE("a box at a pose is the same climbed from vertex 0 or from the hints of a nearby pose") {
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 60; ++k)  // a lumpy polytope: points on a squashed sphere
+    points.emplace_back(0.3 * std::cos(0.7 * k) * std::sin(0.11 * k + 0.2), 0.1 * std::sin(0.7 * k) * std::sin(0.11 * k + 0.2),
+                        0.2 * std::cos(0.11 * k + 0.2));
+  const Shape<double> shape(Polytope<double>::hull(points));
+  SweepHints hints{};
+  for (int step = 0; step < 50; ++step) {
+    const Pose<double> pose = Pose<double>::fromRotationTranslation(
+        Eigen::AngleAxisd(0.05 * step, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+        Eigen::Vector3d(0.01 * step, 0, 1));
+    const Bounds cold = boundsAt(shape, pose), warm = boundsAt(shape, pose, &hints);
+    CHECK(cold.lo == warm.lo);
+    CHECK(cold.hi == warm.hi);
+  }
+}

@@ -5,32 +5,25 @@
 
 namespace gjkx {
 
-namespace {
-
-/// Grows `box` to hold `shape` at `pose` (the shape's support along each axis), each climb
-/// from its hint.
-void addBoxAt(const Shape<double>& shape, const Pose<double>& pose, SweepHints& hints, Bounds& box) {
+Bounds boundsAt(const Shape<double>& shape, const Pose<double>& pose, SweepHints* hints) {
+  SweepHints own{};
+  SweepHints& h = hints ? *hints : own;
   const Placed<Shape<double>> placed{shape, pose};
+  Bounds box;
   for (int k = 0; k < 3; ++k) {
     Eigen::Vector3d e = Eigen::Vector3d::Zero();
     e[k] = 1;
-    box.add(Eigen::Vector3d(placed.support(e, hints[2 * k])));
-    box.add(Eigen::Vector3d(placed.support(-e, hints[2 * k + 1])));
+    box.add(Eigen::Vector3d(placed.support(e, h[2 * k])));
+    box.add(Eigen::Vector3d(placed.support(-e, h[2 * k + 1])));
   }
+  return box;
 }
-
-}  // namespace
 
 Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, const FreeFlight& path, double t0,
                    double t1, const Eigen::Vector3d& gravity, SweepHints* hints) {
-  SweepHints own{};
-  SweepHints& h = hints ? *hints : own;
   const BodyState a = path.stateAt(t0), z = path.stateAt(t1);
-  if (isStatic) {  // a static body's box is tight (its support along each axis), with no bulge
-    Bounds tight;
-    addBoxAt(shape, a.worldFromBody, h, tight);
-    return tight;
-  }
+  // A static body's box is tight (its support along each axis), with no bulge.
+  if (isStatic) return boundsAt(shape, a.worldFromBody, hints);
   // The shape's own box at both ends of [t0, t1], grown by how far any of its points can
   // bulge off the chord between its two ends: a point p(t) whose acceleration stays below
   // a lies within a T^2 / 8 of the chord, and the chord lies in the two end boxes' union.
@@ -38,8 +31,8 @@ Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, con
   // with g, so a point within `radius` of the centre of mass has a <= |g| + w^2 radius
   // (MotionBound::pointAcceleration).
   const double T = t1 - t0;
-  Bounds box;
-  for (const BodyState* s : {&a, &z}) addBoxAt(shape, s->worldFromBody, h, box);
+  Bounds box = boundsAt(shape, a.worldFromBody, hints);
+  box.add(boundsAt(shape, z.worldFromBody, hints));
   box.inflate(path.motion.bound().pointAcceleration(radius) * T * T / 8);
   if (path.start.angularVelocity.squaredNorm() > 0) {
     // Turning far, the sphere about the centre of mass is the tighter box (each holds the

@@ -59,15 +59,19 @@ struct PathPiece {
   double end = 0;   ///< until when it was followed
 };
 
+/// The box of `shape` at `pose`: its support along each axis. `hints`, when given, is
+/// where the six climbs (along +x, -x, +y, -y, +z, -z) start, and is left where they ended
+/// (a body's next box, at a pose near this one, then takes a step or two per climb: the
+/// answer is the same).
+Bounds boundsAt(const Shape<double>& shape, const Pose<double>& pose, SweepHints* hints = nullptr);
+
 /// The box of `shape` (body frame at the centre of mass, bounding radius `radius`) along
 /// `path` over [t0, t1]: a static body's own box at t0 (tight, its support along each
 /// axis); a moving body's own box at both ends, grown by the bulge
 /// `path.motion.bound().pointAcceleration(radius)` T^2 / 8 of its points off their chords;
 /// for a turning body, cut down to the box of the sphere about its centre of mass at both
 /// ends (grown by the ballistic bulge |g| T^2 / 8), which holds every orientation.
-/// `hints`, when given, is where the shape's support climbs along +x, -x, +y, -y, +z, -z
-/// start, and is left where they ended (a body's next box, at poses near these, then takes
-/// a step or two per climb: the answer is the same).
+/// `hints` as for boundsAt.
 Bounds sweptBounds(const Shape<double>& shape, double radius, bool isStatic, const FreeFlight& path, double t0,
                    double t1, const Eigen::Vector3d& gravity, SweepHints* hints = nullptr);
 
