@@ -6,6 +6,7 @@
 #include <gjkx/timewarp/sleep.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -21,17 +22,24 @@ struct SolverBody {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
-/// One manifold point as a constraint row: its lever arms, its effective mass along the
-/// normal, and the normal velocity it may close at.
+/// One manifold point as a constraint row, in the form the sweeps read (Catto's Jacobians):
+/// for each direction d of the point (the normal, then the tangent plane's t1 and t2), the
+/// lever arms' cross products \f$r \times d\f$ (the relative velocity along d reads
+/// \f$d\cdot(v_j - v_i) + (r_j\times d)\cdot\omega_j - (r_i\times d)\cdot\omega_i\f$) and the spin
+/// an impulse along d gives each body, \f$I^{-1}(r \times d)\f$.
 struct Row {
-  Manifold* manifold;
-  ManifoldPoint* point;
-  Eigen::Vector3d rI, rJ;
+  int i, j;                                   // the bodies
+  ManifoldPoint* point;                       // where its impulses are kept
+  double friction;                            // the pair's mu
+  std::array<Eigen::Vector3d, 3> d;           // n, t1, t2
+  std::array<Eigen::Vector3d, 3> armI, armJ;  // r_i x d, r_j x d
+  std::array<Eigen::Vector3d, 3> spinI, spinJ;  // I_i^-1 (r_i x d), I_j^-1 (r_j x d)
   double normalMass;
-  Eigen::Vector3d t1, t2;        // a basis of the tangent plane
-  Eigen::Matrix2d tangentMass;   // the inverse of the tangent plane's 2x2 block
-  double tangentScale;           // the block's size: an impulse times it is a velocity
+  Eigen::Matrix2d K;            // the tangent plane's 2x2 block (response along t1, t2)
+  Eigen::Matrix2d tangentMass;  // its inverse
+  double tangentScale;          // the block's size: an impulse times it is a velocity
   double target;  // the least normal velocity allowed (never positive: speculative contact)
+  double f1 = 0, f2 = 0;  // the friction impulse along t1 and t2 while the solve runs
 };
 
 /// How the relative velocity at lever arms rI, rJ along unit e answers an impulse along unit d:
@@ -74,17 +82,22 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     for (int b : {m->i, m->j}) solverBodies[b].centre = states[b].worldFromBody.translation;
   GroupSolve out;
   out.kineticBefore = kineticEnergy(step, group, states);
-  const auto apply = [&](const Row& row, const Eigen::Vector3d& impulse) {
-    const int i = row.manifold->i, j = row.manifold->j;
-    const SolverBody &I = solverBodies[i], &J = solverBodies[j];
-    states[i].velocity -= I.inverseMass * impulse;
-    states[i].angularVelocity -= I.inverseInertia * row.rI.cross(impulse);
-    states[j].velocity += J.inverseMass * impulse;
-    states[j].angularVelocity += J.inverseInertia * row.rJ.cross(impulse);
+  // The velocities the sweeps change, side by side (a body's state is read back at the end).
+  std::vector<Eigen::Vector3d> v(step.bodies.size()), w(step.bodies.size());
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) {
+      v[b] = states[b].velocity;
+      w[b] = states[b].angularVelocity;
+    }
+  // An impulse `size` along direction k of a row, and the relative velocity along it.
+  const auto apply = [&](const Row& row, int k, double size) {
+    v[row.i] -= solverBodies[row.i].inverseMass * size * row.d[k];
+    w[row.i] -= size * row.spinI[k];
+    v[row.j] += solverBodies[row.j].inverseMass * size * row.d[k];
+    w[row.j] += size * row.spinJ[k];
   };
-  const auto relativeVelocity = [&](const Row& row) -> Eigen::Vector3d {
-    const BodyState &si = states[row.manifold->i], &sj = states[row.manifold->j];
-    return sj.velocity + sj.angularVelocity.cross(row.rJ) - si.velocity - si.angularVelocity.cross(row.rI);
+  const auto velocityAlong = [&](const Row& row, int k) {
+    return row.d[k].dot(v[row.j] - v[row.i]) + row.armJ[k].dot(w[row.j]) - row.armI[k].dot(w[row.i]);
   };
   const double rest = tuning.restSeparation * tolerance;
   std::vector<Row> rows;
@@ -92,22 +105,36 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     const SolverBody &I = solverBodies[m->i], &J = solverBodies[m->j];
     const Eigen::Vector3d& n = m->normal;
     for (ManifoldPoint& p : m->points) {
-      Row row{m, &p, p.point - I.centre, p.point - J.centre, 0, n.unitOrthogonal(), Eigen::Vector3d::Zero(),
-              Eigen::Matrix2d::Zero(), 0, 0};
-      row.t2 = n.cross(row.t1);
-      const double k = response(I, J, row.rI, row.rJ, n, n);
+      Row row;
+      row.i = m->i;
+      row.j = m->j;
+      row.point = &p;
+      row.friction = m->friction;
+      const Eigen::Vector3d rI = p.point - I.centre, rJ = p.point - J.centre;
+      row.d = {n, n.unitOrthogonal(), Eigen::Vector3d::Zero()};
+      row.d[2] = n.cross(row.d[1]);
+      for (int k = 0; k < 3; ++k) {
+        row.armI[k] = rI.cross(row.d[k]);
+        row.armJ[k] = rJ.cross(row.d[k]);
+        row.spinI[k] = I.inverseInertia * row.armI[k];
+        row.spinJ[k] = J.inverseInertia * row.armJ[k];
+      }
+      const double k = response(I, J, rI, rJ, n, n);
       row.normalMass = k > 0 ? 1.0 / k : 0.0;
-      Eigen::Matrix2d K;
-      K << response(I, J, row.rI, row.rJ, row.t1, row.t1), response(I, J, row.rI, row.rJ, row.t1, row.t2),
-          response(I, J, row.rI, row.rJ, row.t2, row.t1), response(I, J, row.rI, row.rJ, row.t2, row.t2);
-      if (K.determinant() > 1e-300) row.tangentMass = K.inverse();
-      row.tangentScale = K.norm();
+      const Eigen::Vector3d &t1 = row.d[1], &t2 = row.d[2];
+      row.K << response(I, J, rI, rJ, t1, t1), response(I, J, rI, rJ, t1, t2), response(I, J, rI, rJ, t2, t1),
+          response(I, J, rI, rJ, t2, t2);
+      row.tangentMass = row.K.determinant() > 1e-300 ? Eigen::Matrix2d(row.K.inverse()) : Eigen::Matrix2d::Zero();
+      row.tangentScale = row.K.norm();
       // Speculative contact: the point may close by what separates it from rest, no more.
       row.target = -std::max(0.0, p.separation - rest) / dt;
-      rows.push_back(row);
       // Warm start: last solve's impulses (the friction kept in the contact plane).
-      p.frictionImpulse -= n * n.dot(p.frictionImpulse);
-      apply(row, p.normalImpulse * n + p.frictionImpulse);
+      row.f1 = t1.dot(p.frictionImpulse);
+      row.f2 = t2.dot(p.frictionImpulse);
+      apply(row, 0, p.normalImpulse);
+      apply(row, 1, row.f1);
+      apply(row, 2, row.f2);
+      rows.push_back(row);
     }
   }
   // Sweeps until no impulse changes the velocity at its point by more than contactSettled
@@ -127,35 +154,35 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     double largest = 0;
     for (std::size_t r = 0; r < rows.size(); ++r) {
       Row& row = rows[r];
-      ManifoldPoint& p = *row.point;
-      const Eigen::Vector3d& n = row.manifold->normal;
       if (friction) {
         // The impulse that stops the point's slip: the tangent plane's 2x2 block solved
         // exactly (its two directions are coupled through the rotation); if that lies within
         // Coulomb's disc the point sticks. Else it slides, and feels mu lambda_n against its
         // slip: the impulse that would stop the slip along it, cut to the disc.
-        const Eigen::Vector3d v = relativeVelocity(row);
-        const Eigen::Vector3d slip = v - n * n.dot(v);
+        const Eigen::Vector2d slip(velocityAlong(row, 1), velocityAlong(row, 2));
         const double speed = slip.norm();
         if (speed > 0) {
-          const Eigen::Vector3d old = p.frictionImpulse;
-          const Eigen::Vector2d stop = -row.tangentMass * Eigen::Vector2d(row.t1.dot(slip), row.t2.dot(slip));
-          Eigen::Vector3d next = old + stop.x() * row.t1 + stop.y() * row.t2;
+          const Eigen::Vector2d old(row.f1, row.f2);
+          Eigen::Vector2d next = old - row.tangentMass * slip;
           if (next.norm() > limits[r]) {
-            const Eigen::Vector3d t = slip / speed;
-            const double k = response(solverBodies[row.manifold->i], solverBodies[row.manifold->j], row.rI, row.rJ, t, t);
+            const Eigen::Vector2d t = slip / speed;
+            const double k = t.dot(row.K * t);  // the response along the slip
             next = old - (k > 0 ? speed / k : 0.0) * t;
             if (next.norm() > limits[r]) next *= limits[r] / next.norm();
           }
-          p.frictionImpulse = next;
-          apply(row, next - old);
-          largest = std::max(largest, std::min(speed, (next - old).norm() * row.tangentScale));
+          const Eigen::Vector2d change = next - old;
+          row.f1 = next.x();
+          row.f2 = next.y();
+          apply(row, 1, change.x());
+          apply(row, 2, change.y());
+          largest = std::max(largest, std::min(speed, change.norm() * row.tangentScale));
         }
       }
-      const double vn = n.dot(relativeVelocity(row));
+      ManifoldPoint& p = *row.point;
+      const double vn = velocityAlong(row, 0);
       const double old = p.normalImpulse;
       p.normalImpulse = std::max(0.0, old - row.normalMass * (vn - row.target));
-      apply(row, (p.normalImpulse - old) * n);
+      apply(row, 0, p.normalImpulse - old);
       largest = std::max(largest, std::abs(p.normalImpulse - old) / std::max(row.normalMass, 1e-300));
     }
     ++out.sweeps;
@@ -171,16 +198,25 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t r = 0; r < rows.size(); ++r) {
-      ManifoldPoint& p = *rows[r].point;
-      limits[r] = rows[r].manifold->friction * p.normalImpulse;
-      if (p.frictionImpulse.norm() > limits[r]) {  // a warm start above the new bound is cut to it
-        const Eigen::Vector3d next = p.frictionImpulse * (limits[r] / p.frictionImpulse.norm());
-        apply(rows[r], next - p.frictionImpulse);
-        p.frictionImpulse = next;
+      Row& row = rows[r];
+      limits[r] = row.friction * row.point->normalImpulse;
+      const double size = std::hypot(row.f1, row.f2);
+      if (size > limits[r]) {  // a warm start above the new bound is cut to it
+        const double scale = limits[r] / size;
+        apply(row, 1, row.f1 * scale - row.f1);
+        apply(row, 2, row.f2 * scale - row.f2);
+        row.f1 *= scale;
+        row.f2 *= scale;
       }
     }
     for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
   }
+  for (const Row& row : rows) row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) {
+      states[b].velocity = v[b];
+      states[b].angularVelocity = w[b];
+    }
   out.kineticAfter = kineticEnergy(step, group, states);
   return out;
 }
