@@ -188,13 +188,13 @@ bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const 
     // Only "within the tolerance or not" is asked of a pair that is apart (§2.3's boolean
     // query): most pairs the instant pass looks at touched earlier in the frame and have
     // parted since, and the direction that last separated them, warm from the cache, says
-    // so with two supports.
+    // so with two supports (the run then ends with a distance above the tolerance, an upper
+    // bound, and the pair is not in contact).
     GjkSettings<double> settings;
     settings.separationThreshold = step.scene.collisionTolerance;
     g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
             Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, settings, cache);
   }
-  if (g.status == GjkStatus::SeparatingVector) return false;
   if (g.status != GjkStatus::Overlapping && g.distance > step.scene.collisionTolerance) return false;
   contactFromGjk(step, g, i, pi, j, pj, t, si, sj, hit);
   return true;

@@ -236,8 +236,8 @@ std::vector<Manifold> findContacts(StepContext& step, NarrowPhase<S>& narrow, do
   const double band = step.band(tuning.contactBand);
   const double contactSpeed = tuning.contactSpeed * step.scene.gravity.norm() * dt;
   // Each body's own box at t0 (its support along each axis), grown by the band: two bodies
-  // whose boxes keep apart have no pieces within the band. (The sphere about the centre of
-  // mass of a rib held a dozen neighbours, each pair then tested piece by piece.)
+  // whose boxes keep apart have no pieces within the band. (The sphere about a rib's centre
+  // of mass would hold a dozen neighbours, each pair then tested piece by piece.)
   std::vector<Bounds> boxes(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     boxes[b] = boundsAt(bodies[b].shape, states[b].worldFromBody, &bodies[b].boundsHints);

@@ -352,12 +352,12 @@ void NarrowPhase<S>::piecesWithin(StepContext& step, int i, int j, double t, con
     GjkCache<double>* cache =
         step.settings.warmStarts ? &staticCoherence_[step.piecePairKey(i, p.a, j, p.b)] : nullptr;
     // A pair farther apart than `distance` is left as soon as a direction proves it (§2.3's
-    // boolean query; warm, most often the first).
+    // boolean query; warm, most often the first): its run ends with a distance above
+    // `distance` (an upper bound).
     GjkSettings<double> settings;
     settings.separationThreshold = distance;
     const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[p.a], si.worldFromBody},
                                     Placed<Shape<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody}, settings, cache);
-    if (g.status == GjkStatus::SeparatingVector) continue;
     if (g.status == GjkStatus::Overlapping || g.distance <= distance) out.emplace_back(p, g);
   }
 }

@@ -7,8 +7,9 @@
 /// any of its points can bulge off its chord between them: a point whose acceleration stays
 /// below a lies within a T^2 / 8 of its chord (for a ballistic path turning at a constant
 /// rate w, a = |g| + w^2 r at distance r from the centre of mass). A body turning far is
-/// held by the sphere about its centre of mass as well, and gets the two boxes' overlap. The pairs are found by sweep and prune along x (the boxes sorted by their low x,
-/// each compared with those that start before it ends).
+/// held by the sphere about its centre of mass as well, and gets the two boxes' overlap.
+/// The pairs are found by sweep and prune along x (the boxes sorted by their low x, each
+/// compared with those that start before it ends).
 #pragma once
 
 #include <gjkx/dynamics/free_flight.hpp>
