@@ -192,8 +192,8 @@ bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const 
     // bound, and the pair is not in contact).
     GjkSettings<double> settings;
     settings.separationThreshold = step.scene.collisionTolerance;
-    g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
-            Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, settings, cache);
+    g = gjk(Placed<ShapeRef<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
+            Placed<ShapeRef<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, settings, cache);
   }
   if (g.status != GjkStatus::Overlapping && g.distance > step.scene.collisionTolerance) return false;
   contactFromGjk(step, g, i, pi, j, pj, t, si, sj, hit);

@@ -70,8 +70,8 @@ ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j,
   const WorldBody& P = step.bodies[i];
   const WorldBody& Q = step.bodies[j];
   const StepTuning& tuning = step.settings.tuning;
-  const Moving<Shape<S>> movingP{piecesOf(step.bodies, i)[pi], motionOf(P, i)};
-  const Moving<Shape<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
+  const Moving<ShapeRef<S>> movingP{piecesOf(step.bodies, i)[pi], motionOf(P, i)};
+  const Moving<ShapeRef<S>> movingQ{piecesOf(step.bodies, j)[pj], motionOf(Q, j)};
   // The paper's solver (asked for by the scene or the world's settings) runs the paper's
   // test with every refinement off; ours takes the world's variant and warm starts.
   const bool paper = step.paperSolver();
@@ -249,8 +249,8 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
       // coordinates) tilts the normal by 1e-3, enough to make a 6 m floor touch at a far
       // corner. So the contact data are taken again in double at the time found.
       PartTimer timer(step.frame.report.parts.collisionDetection);
-      const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
-                                      Placed<Shape<double>>{step.bodies[j].pieces[pj], sj.worldFromBody});
+      const GjkResult<double> g = gjk(Placed<ShapeRef<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
+                                      Placed<ShapeRef<double>>{step.bodies[j].pieces[pj], sj.worldFromBody});
       if (g.status != GjkStatus::Overlapping) {
         r.distance = g.distance;
         hit.pointI = g.witnessP;
@@ -321,8 +321,8 @@ bool NarrowPhase<S>::touchingAt(StepContext& step, int i, int j, double t, const
     GjkResult<double> g;
     {
       PartTimer timer(step.frame.report.parts.collisionDetection);
-      const auto r = gjk(Placed<Shape<S>>{piecesOf(step.bodies, i)[p.a], si.worldFromBody.template cast<S>()},
-                         Placed<Shape<S>>{piecesOf(step.bodies, j)[p.b], sj.worldFromBody.template cast<S>()});
+      const auto r = gjk(Placed<ShapeRef<S>>{piecesOf(step.bodies, i)[p.a], si.worldFromBody.template cast<S>()},
+                         Placed<ShapeRef<S>>{piecesOf(step.bodies, j)[p.b], sj.worldFromBody.template cast<S>()});
       g.status = r.status;
       g.distance = double(r.distance);
       g.witnessP = r.witnessP.template cast<double>();
@@ -356,8 +356,8 @@ void NarrowPhase<S>::piecesWithin(StepContext& step, int i, int j, double t, con
     // `distance` (an upper bound).
     GjkSettings<double> settings;
     settings.separationThreshold = distance;
-    const GjkResult<double> g = gjk(Placed<Shape<double>>{step.bodies[i].pieces[p.a], si.worldFromBody},
-                                    Placed<Shape<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody}, settings, cache);
+    const GjkResult<double> g = gjk(Placed<ShapeRef<double>>{step.bodies[i].pieces[p.a], si.worldFromBody},
+                                    Placed<ShapeRef<double>>{step.bodies[j].pieces[p.b], sj.worldFromBody}, settings, cache);
     if (g.status == GjkStatus::Overlapping || g.distance <= distance) out.emplace_back(p, g);
   }
 }

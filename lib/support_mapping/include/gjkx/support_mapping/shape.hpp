@@ -56,4 +56,35 @@ class Shape {
   Variant shape_;
 };
 
+/// A Shape seen through a pointer: the same support mapping, without a copy. A simulation
+/// places each body's pieces thousands of times per frame (`Placed`, `Moving` and the
+/// solver's poses hold their shape by value), and copying a polytope's Shape copies its
+/// shared hull (an atomic count up and down). The Shape must outlive the reference.
+template <typename S>
+class ShapeRef {
+ public:
+  /// The scalar type.
+  using Scalar = S;
+  /// A reference to `shape`.
+  ShapeRef(const Shape<S>& shape) : shape_(&shape) {}  // NOLINT: implicit on purpose
+
+  /// \f$S_X(\vec{s})\f$.
+  Vector3<S> support(const Vector3<S>& s) const { return shape_->support(s); }
+  /// \f$S_X(\vec{s})\f$ with a warm-start hint (used by the polytope).
+  Vector3<S> support(const Vector3<S>& s, SupportHint& hint) const { return shape_->support(s, hint); }
+  /// A point inside.
+  Vector3<S> center() const { return shape_->center(); }
+  /// The largest distance of a point of the shape from the body origin.
+  S boundingRadius() const { return shape_->boundingRadius(); }
+  /// The radius of the alternative if it is rounded, else 0 (Shape::coreRadius).
+  S coreRadius() const { return shape_->coreRadius(); }
+  /// The support of the alternative's core (Shape::coreSupport).
+  Vector3<S> coreSupport(const Vector3<S>& s, SupportHint& hint) const { return shape_->coreSupport(s, hint); }
+  /// The Shape referred to.
+  const Shape<S>& shape() const { return *shape_; }
+
+ private:
+  const Shape<S>* shape_;
+};
+
 }  // namespace gjkx
