@@ -15,7 +15,7 @@
 /// front's size is predictable; pieces from a decomposition are few (tens to hundreds)
 /// and of similar size, where a surface-area heuristic, made for rays and skewed
 /// primitive sizes, buys little; and the build is a few `nth_element` calls plus one
-/// Qhull hull per node. Bottom-up merging would give tighter nodes at a quadratic cost.
+/// Qhull hull per node, of its two children's hull vertices. Bottom-up merging would give tighter nodes at a quadratic cost.
 #pragma once
 
 #include <gjkx/kdop/kdop.hpp>
@@ -105,25 +105,16 @@ class Bvh {
  private:
   int build(std::vector<int>& order, int first, int last, int parent, int depth) {
     const int index = static_cast<int>(nodes_.size());
-    std::vector<Vector3<S>> points;
-    for (int i = first; i < last; ++i) {
-      const auto& v = pieces_[order[i]].vertices();
-      points.insert(points.end(), v.begin(), v.end());
+    // A leaf's hull is its piece; an inner node's is filled in below, once its children's
+    // are known (children after their parent: the node's place is taken first).
+    nodes_.push_back(BvhNode<S>{pieces_[order[first]]});
+    nodes_[index].parent = parent;
+    nodes_[index].depth = depth;
+    if (last - first == 1) {
+      nodes_[index].piece = order[first];
+      finish(nodes_[index]);
+      return index;
     }
-    // Pieces in the plane z = 0 (a 2D figure's bodies) have a polygon as their hull.
-    const bool planar = pieces_[order[first]].planar();
-    BvhNode<S> node{last - first == 1 ? pieces_[order[first]]
-                                      : (planar ? Polytope<S>::polygon(points) : Polytope<S>::hull(points))};
-    node.parent = parent;
-    node.depth = depth;
-    for (const auto& v : node.hull.vertices()) node.size = std::max(node.size, (v - node.hull.center()).norm());
-    for (int i = 0; i < 27; ++i) {
-      const Vector3<S> d(S(i / 9 - 1), S(i / 3 % 3 - 1), S(i % 3 - 1));
-      node.startVertex[i] = i == 13 ? 0 : node.hull.supportIndexLinearScan(d);
-    }
-    if (last - first == 1) node.piece = order[first];
-    nodes_.push_back(node);
-    if (last - first == 1) return index;
     // The longest extent of the pieces' centres, and the median along it.
     Vector3<S> lo = pieces_[order[first]].center(), hi = lo;
     for (int i = first; i < last; ++i) {
@@ -139,9 +130,27 @@ class Bvh {
     });
     const int left = build(order, first, middle, index, depth + 1);
     const int right = build(order, middle, last, index, depth + 1);
-    nodes_[index].left = left;
-    nodes_[index].right = right;
+    // The hull of the pieces is the hull of the children's hulls: only their vertices are
+    // handed to the hull (a static mesh of 8,640 prisms would give the root 51,840 points).
+    std::vector<Vector3<S>> points = nodes_[left].hull.vertices();
+    const auto& more = nodes_[right].hull.vertices();
+    points.insert(points.end(), more.begin(), more.end());
+    // Pieces in the plane z = 0 (a 2D figure's bodies) have a polygon as their hull.
+    BvhNode<S>& node = nodes_[index];
+    node.hull = pieces_[order[first]].planar() ? Polytope<S>::polygon(points) : Polytope<S>::hull(points);
+    node.left = left;
+    node.right = right;
+    finish(node);
     return index;
+  }
+
+  /// The node's size and its climbs' starting vertices, from its hull.
+  static void finish(BvhNode<S>& node) {
+    for (const auto& v : node.hull.vertices()) node.size = std::max(node.size, (v - node.hull.center()).norm());
+    for (int i = 0; i < 27; ++i) {
+      const Vector3<S> d(S(i / 9 - 1), S(i / 3 % 3 - 1), S(i % 3 - 1));
+      node.startVertex[i] = i == 13 ? 0 : node.hull.supportIndexLinearScan(d);
+    }
   }
 
   std::vector<Polytope<S>> pieces_;
