@@ -119,12 +119,13 @@ ToiResult<double> NarrowPhase<S>::query(StepContext& step, int i, int pi, int j,
   return out;
 }
 
-/// The piece pairs of bodies i and j that may touch over [t0, t1]: the one pair of two
-/// convex bodies; for mesh bodies, the pairs the 14-DOP hierarchies cannot prove apart
-/// (kdop's body-pair query, its front kept between frames for the pair); a mesh against a
+/// The piece pairs of bodies i and j that may come within `tolerance` over [t0, t1]: the one
+/// pair of two convex bodies; for mesh bodies, the pairs the 14-DOP hierarchies cannot prove
+/// apart (kdop's body-pair query, its front kept between frames for the pair); a mesh against a
 /// convex body that is not a polytope: every piece.
 template <typename S>
-std::vector<PiecePair> NarrowPhase<S>::piecePairs(StepContext& step, int i, int j, double t0, double t1) {
+std::vector<PiecePair> NarrowPhase<S>::piecePairs(StepContext& step, int i, int j, double t0, double t1,
+                                                  double tolerance) {
   const std::size_t piecesI = step.bodies[i].pieces.size(), piecesJ = step.bodies[j].pieces.size();
   if (piecesI == 1 && piecesJ == 1) return {PiecePair{0, 0}};
   std::vector<PiecePair> pairs;
@@ -142,7 +143,8 @@ std::vector<PiecePair> NarrowPhase<S>::piecePairs(StepContext& step, int i, int 
         if (!kdops_[b]) kdops_[b] = std::make_unique<BodyKdops<S>>(*bvh_[b]);
       query = std::make_unique<BodyPairQuery<S>>(*kdops_[i], *kdops_[j], settings);
     }
-    BodyPairOutput<S> out = query->query(motionOf(step.bodies[i], i), motionOf(step.bodies[j], j), S(t0), S(t1));
+    BodyPairOutput<S> out =
+        query->query(motionOf(step.bodies[i], i), motionOf(step.bodies[j], j), S(t0), S(t1), S(tolerance));
     step.frame.report.counters.kdopNodes += out.counters.nodesVisited;
     pairs = std::move(out.pairs);
   } else {
@@ -163,7 +165,7 @@ bool NarrowPhase<S>::checkPair(StepContext& step, int i, int j, double t0, doubl
   // Once one piece pair has a collision, the others are checked only until it: one of
   // theirs that comes later is not the pair's (and were it needed, the collision's impulse
   // changes a body of the pair, whose pairs are all checked again from there).
-  for (const PiecePair& p : piecePairs(step, i, j, t0, t1)) {
+  for (const PiecePair& p : piecePairs(step, i, j, t0, t1, step.scene.collisionTolerance)) {
     const double until = found ? hit.time : t1;
     if (until <= t0 || !checkPieces(step, i, p.a, j, p.b, t0, until, t1, tolerance, piece)) continue;
     if (!found || piece.time < hit.time) hit = piece;
@@ -314,7 +316,7 @@ bool NarrowPhase<S>::landsAsContact(StepContext& step, int i, int pi, int j, int
 template <typename S>
 bool NarrowPhase<S>::touchingAt(StepContext& step, int i, int j, double t, const BodyState& si, const BodyState& sj,
                                 Hit& hit) {
-  const std::vector<PiecePair> pairs = piecePairs(step, i, j, t, t);
+  const std::vector<PiecePair> pairs = piecePairs(step, i, j, t, t, step.scene.collisionTolerance);
   bool found = false;
   for (const PiecePair& p : pairs) {
     ++step.frame.report.counters.collisionChecks;
@@ -347,7 +349,9 @@ template <typename S>
 void NarrowPhase<S>::piecesWithin(StepContext& step, int i, int j, double t, const BodyState& si,
                                   const BodyState& sj, double distance,
                                   std::vector<std::pair<PiecePair, GjkResult<double>>>& out) {
-  for (const PiecePair& p : piecePairs(step, i, j, t, t)) {
+  // (The hierarchies keep only pieces within `distance`: the contact band is wider than the
+  // collisions' tolerance the body pair's other queries use.)
+  for (const PiecePair& p : piecePairs(step, i, j, t, t, distance)) {
     ++step.frame.report.counters.collisionChecks;
     GjkCache<double>* cache =
         step.settings.warmStarts ? &staticCoherence_[step.piecePairKey(i, p.a, j, p.b)] : nullptr;

@@ -148,7 +148,17 @@ class BodyPairQuery {
   /// extrusion test cannot prove apart over \f$[t_0, t_1]\f$. Throws std::invalid_argument
   /// ("bodyPair.t0"/"bodyPair.t1") for a non-finite time or t1 < t0.
   BodyPairOutput<S> query(const Motion<S>& motionA, const Motion<S>& motionB, S t0, S t1) {
+    return query(motionA, motionB, t0, t1, settings_.tolerance);
+  }
+
+  /// The same with a tolerance of its own for this query (>= 0): a pair is pruned only if a
+  /// slab keeps it more than `tolerance` apart. (A simulation's contact test asks which
+  /// pieces lie within a band wider than its collisions' tolerance, on the same front.)
+  /// Throws std::invalid_argument ("bodyPair.tolerance") for a negative or non-finite one.
+  BodyPairOutput<S> query(const Motion<S>& motionA, const Motion<S>& motionB, S t0, S t1, S tolerance) {
     requireInterval(t0, t1, "bodyPair");
+    requireNonNegative(tolerance, "bodyPair.tolerance");
+    tolerance_ = tolerance;
     ++stamp_;
     bodyA_->begin(motionA, t0, t1);
     bodyB_->begin(motionB, t0, t1);
@@ -210,9 +220,9 @@ class BodyPairQuery {
                     : (bodyA_->value(a, k, false, end, c) - bodyB_->value(b, k, true, end, c)) * scale;
     };
     const S gap0 = gap(0);
-    if (!(gap0 > settings_.tolerance)) return false;  // settled at t0: the t1 ends are not needed
+    if (!(gap0 > tolerance_)) return false;  // settled at t0: the t1 ends are not needed
     return slabSeparatesOverInterval(gap0, gap(1), duration_, bodyA_->acceleration(a), bodyB_->acceleration(b),
-                                     settings_.variant, settings_.tolerance);
+                                     settings_.variant, tolerance_);
   }
 
   // The k-DOP extrusion test of BVTT node (a, b): the slab side that proves it apart, or
@@ -301,6 +311,7 @@ class BodyPairQuery {
   BodyKdops<S>* bodyA_;
   BodyKdops<S>* bodyB_;
   S duration_ = S(0);
+  S tolerance_ = S(0);  // the tolerance of the query under way
   unsigned stamp_ = 0;
   std::vector<FrontNode> front_;
   std::unordered_map<std::uint64_t, std::uint64_t> parentOf_;

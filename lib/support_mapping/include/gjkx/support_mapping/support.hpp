@@ -104,9 +104,9 @@ Vector3<typename X::Scalar> coreSupportFrom(const X& x, const Vector3<typename X
 
 /// Checks that a size (radius, half extent) is finite and not negative; the message names the field.
 template <typename Scalar>
-void requireNonNegative(Scalar value, const std::string& field) {
+void requireNonNegative(Scalar value, std::string_view field) {
   requireFinite(value, field);
-  if (value < Scalar(0)) failInput(field, "must not be negative, got " + std::to_string(double(value)));
+  if (value < Scalar(0)) failInput(std::string(field), "must not be negative, got " + std::to_string(double(value)));
 }
 
 }  // namespace gjkx

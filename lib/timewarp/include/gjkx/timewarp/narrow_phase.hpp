@@ -58,7 +58,8 @@ class NarrowPhase {
                     double distance, std::vector<std::pair<PiecePair, GjkResult<double>>>& out);
 
  private:
-  std::vector<PiecePair> piecePairs(StepContext& step, int i, int j, double t0, double t1);
+  /// The piece pairs of bodies i and j that may come within `tolerance` over [t0, t1].
+  std::vector<PiecePair> piecePairs(StepContext& step, int i, int j, double t0, double t1, double tolerance);
   /// The earliest collision of pieces pi of i and pj of j in [t0, t1] within `tolerance`;
   /// `pathsEnd` (>= t1) is where both bodies' paths end, which a landing is checked to.
   bool checkPieces(StepContext& step, int i, int pi, int j, int pj, double t0, double t1, double pathsEnd,
