@@ -343,3 +343,39 @@ TEST_CASE("a traversal and a front update, step by step, on a two-piece hierarch
   CHECK(query.front()[0].a == Bvh<double>::root());
   CHECK(query.front()[0].slab == 2);
 }
+
+// A simulation asks one body pair two questions on one front: which pieces may come within
+// its collisions' tolerance over an interval, and which lie within a wider contact band at
+// the interval's start. Alternating the two, each answer is the all-pairs test's at that
+// query's tolerance, and a pair between the two tolerances is kept by the wide one only.
+TEMPLATE_TEST_CASE("a tolerance per query: each answer is the all-pairs test's at that tolerance, on one front",
+                   "[kdop][body_pair]", float, double) {
+  using S = TestType;
+  std::mt19937 rng(77);
+  const S narrow = S(0.01), wide = S(0.3);
+  int between = 0;
+  for (int body = 0; body < 6; ++body) {
+    const Bvh<S> a = randomBody<S>(rng, 6 + body), b = randomBody<S>(rng, 5 + body);
+    BodyPairSettings<S> settings;
+    settings.tolerance = narrow;
+    BodyPairQuery<S> query(a, b, settings);
+    Pose<S> pa = randomPose<S>(rng, 2), pb = randomPose<S>(rng, 3);
+    for (int frame = 0; frame < 15; ++frame) {
+      const Motion<S> ma = Motion<S>::screw(pa, randomVector<S>(rng, 0.2), randomVector<S>(rng, 0.3));
+      const Motion<S> mb = Motion<S>::screw(pb, randomVector<S>(rng, 0.2), randomVector<S>(rng, 0.3));
+      BodyPairSettings<S> wideSettings = settings;
+      wideSettings.tolerance = wide;
+      const auto atStart = query.query(ma, mb, S(0), S(0), wide);
+      REQUIRE(atStart.pairs == bruteForcePiecePairs(a, ma, b, mb, S(0), S(0), wideSettings));
+      const auto swept = query.query(ma, mb, S(0), S(1));
+      REQUIRE(swept.pairs == bruteForcePiecePairs(a, ma, b, mb, S(0), S(1), settings));
+      const auto narrowAtStart = bruteForcePiecePairs(a, ma, b, mb, S(0), S(0), settings);
+      between += int(atStart.pairs.size() - narrowAtStart.size());
+      pa = ma.pose(S(1));
+      pb = mb.pose(S(1));
+    }
+  }
+  CHECK(between > 0);  // some pairs lie between the two tolerances
+  BodyPairQuery<S> query(randomBody<S>(rng, 3), randomBody<S>(rng, 3));
+  CHECK_THROWS_WITH(query.query(Motion<S>(), Motion<S>(), S(0), S(0), S(-1)), Catch::Contains("bodyPair.tolerance"));
+}
