@@ -49,6 +49,7 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   for (const auto& [b, state, outward] : {std::tuple<int, BodyState*, Eigen::Vector3d>{hit.i, &si, hit.normal},
                                           std::tuple<int, BodyState*, Eigen::Vector3d>{hit.j, &sj, -hit.normal}}) {
     if (bodies[b].rigid.isStatic()) continue;
+    bodies[b].lastStruck = hit.time;
     FrameState::Struck& struck = step.frame.struck[b];
     struck.atLastTime = struck.lastTime == hit.time ? struck.atLastTime + 1 : 1;
     struck.lastTime = hit.time;

@@ -25,6 +25,7 @@
 #include <gjkx/verify/frame_verifier.hpp>
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,9 @@ struct WorldBody {
   /// contact_solver.hpp): gravity's impulse is already in its velocity, and it flies with
   /// gravity off to the interval's end, after a collision too.
   bool contactFlight = false;
+  /// When an impulse last struck it (simulated s; -inf: never). Under the hybrid a body
+  /// struck within the last interval starts the next one in a struck body's step (flyAll).
+  double lastStruck = -std::numeric_limits<double>::infinity();
   /// The contact group it fell asleep with (the hybrid model; -1: none): the group wakes as one.
   int sleepGroup = -1;
   /// The gravity its path feels: none while it sleeps, or flies on the contact solver's path.
