@@ -34,6 +34,7 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   energyRises += o.energyRises;
   contactSweeps += o.contactSweeps;
   landings += o.landings;
+  staticChecks += o.staticChecks;
   sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
@@ -89,6 +90,7 @@ const std::vector<FrameColumn>& frameColumns() {
       {"contacts_s", [](const FrameReport& r) { return r.parts.contacts; }, false},
       {"cpu_s", [](const FrameReport& r) { return r.cpuSeconds; }, false},
       {"landings", [](const FrameReport& r) { return double(r.counters.landings); }, true},
+      {"static_checks", [](const FrameReport& r) { return double(r.counters.staticChecks); }, true},
   };
   return columns;
 }

@@ -207,6 +207,7 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
       r = query(step, i, pi, j, pj, t0, windowEnd, band);
     }
     ++c.collisionChecks;
+    if (step.bodies[i].rigid.isStatic() || step.bodies[j].rigid.isStatic()) ++c.staticChecks;
     c.brentIterations += r.brentIterations;
     c.brentMax = std::max(c.brentMax, long(r.brentIterations));
     c.completeTests += r.gjkRuns;
