@@ -119,11 +119,13 @@ FrameReport World::step() {
   std::vector<int> versions;
   std::vector<char> asleep;
   std::vector<int> groupsAsleep;
+  std::vector<double> lastStruck;
   for (const WorldBody& body : bodies_) {
     paths.push_back(body.path);
     versions.push_back(body.version);
     asleep.push_back(body.asleep);
     groupsAsleep.push_back(body.sleepGroup);
+    lastStruck.push_back(body.lastStruck);
   }
   const auto normals = pairNormals_;
   const ContactCache cache = contactCache_;
@@ -134,6 +136,7 @@ FrameReport World::step() {
       bodies_[b].version = versions[b] + versionBump;  // events computed on the abandoned run are stale
       bodies_[b].asleep = asleep[b];
       bodies_[b].sleepGroup = groupsAsleep[b];
+      bodies_[b].lastStruck = lastStruck[b];
     }
     pairNormals_ = normals;
     contactCache_ = cache;

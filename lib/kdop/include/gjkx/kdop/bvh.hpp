@@ -15,7 +15,8 @@
 /// front's size is predictable; pieces from a decomposition are few (tens to hundreds)
 /// and of similar size, where a surface-area heuristic, made for rays and skewed
 /// primitive sizes, buys little; and the build is a few `nth_element` calls plus one
-/// Qhull hull per node, of its two children's hull vertices. Bottom-up merging would give tighter nodes at a quadratic cost.
+/// Qhull hull per node, of its two children's hull vertices. Bottom-up merging would give
+/// tighter nodes at a quadratic cost.
 #pragma once
 
 #include <gjkx/kdop/kdop.hpp>
