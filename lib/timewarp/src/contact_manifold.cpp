@@ -22,10 +22,20 @@ struct Feature {
   std::vector<double> height;  // per hull vertex
   std::vector<Vec2> points;    // every point of the feature (a curved one's lowest lie inside its hull)
   std::vector<double> pointHeight;
+  bool flat = true;    // every point lies on the plane (or line) through the hull (heightAt)
+  double nearest = 0;  // a curved feature's height nearest the other piece: its supporting plane's
 
   /// The feature's height at a point of the plane inside it: the plane through its largest
-  /// triangle (a face), the line of its segment (an edge), or its one point's.
-  double heightAt(const Vec2& p) const {
+  /// triangle (a face), the line of its segment (an edge), or its one point's. A curved
+  /// feature has no such plane: the one through its rim lies below its cap by up to the
+  /// depth, which made the gap several tolerances too wide where a bone touched another,
+  /// and the solver let the pair close through it. Its supporting plane's height is used
+  /// instead: never farther from the other piece than its surface, so the gap found there
+  /// is never wider than the true one.
+  double heightAt(const Vec2& p) const { return flat ? planeHeightAt(p) : nearest; }
+
+  /// The height of the plane (or line) through the hull's vertices at p.
+  double planeHeightAt(const Vec2& p) const {
     if (hull.size() == 1) return height[0];
     if (hull.size() == 2) {
       const Vec2 d = hull[1] - hull[0];
@@ -109,6 +119,10 @@ Feature featureOf(const std::vector<Eigen::Vector3d>& points, const Eigen::Vecto
     f.hull.push_back(ps.front().at);
     f.height.push_back(ps.front().h);
   }
+  // Flat: every point within a tenth of eps of the hull's plane (a box's face; a bone's
+  // piece is a dome of vertices).
+  for (std::size_t k = 0; k < f.points.size() && f.flat; ++k)
+    f.flat = std::abs(f.planeHeightAt(f.points[k]) - f.pointHeight[k]) <= 0.1 * eps;
   return f;
 }
 
@@ -218,8 +232,11 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
   const Eigen::Vector3d& n = normal;
   const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
   const double eps = tolerance;
-  const Feature A = featureOf(touchingFeature(shapeA, poseA, n, depth), u, v, n, eps);
-  const Feature B = featureOf(touchingFeature(shapeB, poseB, -n, depth), u, v, n, eps);
+  Feature A = featureOf(touchingFeature(shapeA, poseA, n, depth), u, v, n, eps);
+  Feature B = featureOf(touchingFeature(shapeB, poseB, -n, depth), u, v, n, eps);
+  // A's surface faces B along n (its highest points), B's faces A (its lowest).
+  A.nearest = A.pointHeight.empty() ? 0.0 : *std::max_element(A.pointHeight.begin(), A.pointHeight.end());
+  B.nearest = B.pointHeight.empty() ? 0.0 : *std::min_element(B.pointHeight.begin(), B.pointHeight.end());
   // Where the two features overlap on the plane: the vertices of each inside the other,
   // and the crossings of their edges; at each, the separation is B's height minus A's.
   std::vector<std::pair<Vec2, double>> found;  // place on the plane, separation
@@ -242,9 +259,21 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
       if (std::abs(det) <= 1e-12 * d.norm() * e.norm()) continue;  // parallel: their ends are found above
       const double s = cross(w, e) / det, r = cross(w, d) / det;
       if (s < 0 || s > 1 || r < 0 || r > 1) continue;
-      add(A.hull[a0] + s * d, A.height[a0] + s * (A.height[a1] - A.height[a0]),
-          B.height[b0] + r * (B.height[b1] - B.height[b0]));
+      add(A.hull[a0] + s * d, A.flat ? A.height[a0] + s * (A.height[a1] - A.height[a0]) : A.nearest,
+          B.flat ? B.height[b0] + r * (B.height[b1] - B.height[b0]) : B.nearest);
     }
+  // The closest points are where the pieces touch first: a manifold that has no point as
+  // near as they are takes them too (their separation is the distance, never more than the
+  // gap along n there).
+  {
+    double least = 1e300;
+    for (const auto& f : found) least = std::min(least, f.second);
+    if (!found.empty() && least > distance + 0.5 * eps) {
+      const Vec2 at(u.dot(fallback), v.dot(fallback));
+      found.emplace(found.begin(), at, distance);
+      middle.insert(middle.begin(), n.dot(fallback));
+    }
+  }
   std::vector<ManifoldPoint> out;
   if (found.empty()) {  // features that do not overlap by round-off: the closest points
     ManifoldPoint p;
