@@ -373,10 +373,12 @@ std::vector<std::vector<int>> groupsOf(const StepContext& step, const std::vecto
 /// Position projection (non-linear Gauss-Seidel on positions): each manifold's deepest
 /// point nearer than rest moves its bodies apart along the normal, in proportion to their
 /// inverse masses, or, where one rests on the other, the upper one alone (shock
-/// propagation). Positions only: no velocity, so no kinetic energy, is added.
+/// propagation). Positions only: no velocity, so no kinetic energy, is added. A body moves
+/// no farther than contactBand − restSeparation in one projection.
 void project(StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
              std::vector<BodyState>& states) {
   const double rest = step.band(step.settings.tuning.restSeparation);
+  const double reach = step.band(step.settings.tuning.contactBand) - rest;
   std::vector<Eigen::Vector3d> moved(step.bodies.size(), Eigen::Vector3d::Zero());
   std::vector<char> inGroup(step.bodies.size(), 0);
   for (int b : group) inGroup[b] = 1;
@@ -409,9 +411,15 @@ void project(StepContext& step, const std::vector<int>& group, std::vector<Manif
         if (along < -std::sqrt(0.5) && wi > 0) wj = 0;
       }
       const Eigen::Vector3d push = (rest - deepest) / (wi + wj) * m->normal;
+      const double before = m->normal.dot(moved[m->j] - moved[m->i]);
       moved[m->i] -= wi * push;
       moved[m->j] += wj * push;
-      any = pushed = true;
+      // No farther than `reach` in one projection: the move is checked by nothing, and the
+      // pieces the solver does not hold lie beyond the contact band, so it brings none of
+      // them nearer than the rest separation.
+      for (int b : {m->i, m->j})
+        if (const double length = moved[b].norm(); length > reach) moved[b] *= reach / length;
+      if (m->normal.dot(moved[m->j] - moved[m->i]) > before) any = pushed = true;
     }
     if (!pushed) break;
   }
