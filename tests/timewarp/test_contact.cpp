@@ -8,7 +8,6 @@
 // whole interval, as Box2D, Bullet and MuJoCo do), whose position under a constant
 // acceleration a after n intervals is ½ a t² (1 + 1/n): the tests that compare a distance
 // with ½ a t² within 2% run at 120 frames a second for 1 to 2 s (an error of 1/n, under 1%).
-#include <gjkx/gjk/gjk.hpp>
 #include <gjkx/timewarp/contact_manifold.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
@@ -17,7 +16,6 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
 
 using namespace gjkx;
 
@@ -323,35 +321,4 @@ TEST_CASE("hybrid: the manifold of a box on a floor is its four corners, of a bo
   // A face normal is exact where GJK's is off by a milliradian.
   const Eigen::Vector3d tiltedUp = Eigen::Vector3d(1e-3, 0, 1).normalized();
   CHECK((faceNormal(floor, floorPose, cube, cubePose, tiltedUp, 0.01) - up).norm() < 1e-12);
-}
-
-TEST_CASE("hybrid: the manifold of two curved pieces holds their closest points, at their distance") {
-  // Two domes of vertices (a bone's pieces are such), the upper one a little aside: the plane
-  // through a curved feature's rim lies below its cap by up to the depth, and a gap read from
-  // it was several tolerances wider than the pieces' distance.
-  std::vector<Eigen::Vector3d> ball;
-  const double radius = 0.05;
-  for (int a = 0; a <= 12; ++a)
-    for (int b = 0; b < 24; ++b) {
-      const double polar = M_PI * a / 12, azimuth = 2 * M_PI * b / 24;
-      ball.push_back(radius * Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
-                                              std::cos(polar)));
-    }
-  const Shape<double> dome = Polytope<double>::hull(ball);
-  Pose<double> lower, upper;
-  const double distance = tol;
-  upper.translation = Eigen::Vector3d(0.004, 0.003, 2 * radius + distance);
-  upper.rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  const GjkResult<double> g = gjk(Placed<ShapeRef<double>>{dome, lower}, Placed<ShapeRef<double>>{dome, upper});
-  REQUIRE(g.status != GjkStatus::Overlapping);
-  const Eigen::Vector3d normal = (g.witnessQ - g.witnessP).normalized();
-  const auto points = contactManifold(dome, lower, dome, upper, normal, 8 * tol, 0.5 * (g.witnessP + g.witnessQ),
-                                      g.distance, tol);
-  REQUIRE(!points.empty());
-  double nearest = 1e300;
-  for (const ManifoldPoint& p : points) {
-    nearest = std::min(nearest, p.separation);
-    CHECK(p.separation >= g.distance - 1e-9);  // no gap narrower than the distance either
-  }
-  CHECK(nearest == Approx(g.distance).margin(0.1 * tol));
 }

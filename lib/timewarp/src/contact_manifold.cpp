@@ -22,9 +22,6 @@ struct Feature {
   std::vector<double> height;  // per hull vertex
   std::vector<Vec2> points;    // every point of the feature (a curved one's lowest lie inside its hull)
   std::vector<double> pointHeight;
-  /// Every point lies on the plane (or line) through the hull: heightAt is exact inside it.
-  /// A curved feature (a bone's piece is a dome of vertices) has no such plane.
-  bool flat = true;
 
   /// The feature's height at a point of the plane inside it: the plane through its largest
   /// triangle (a face), the line of its segment (an edge), or its one point's.
@@ -112,10 +109,6 @@ Feature featureOf(const std::vector<Eigen::Vector3d>& points, const Eigen::Vecto
     f.hull.push_back(ps.front().at);
     f.height.push_back(ps.front().h);
   }
-  // Flat: every point within a tenth of eps of the hull's plane (a box's face; a bone's
-  // piece is a dome of vertices).
-  for (std::size_t k = 0; k < f.points.size() && f.flat; ++k)
-    f.flat = std::abs(f.heightAt(f.points[k]) - f.pointHeight[k]) <= 0.1 * eps;
   return f;
 }
 
@@ -229,12 +222,6 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
   const Feature B = featureOf(touchingFeature(shapeB, poseB, -n, depth), u, v, n, eps);
   // Where the two features overlap on the plane: the vertices of each inside the other,
   // and the crossings of their edges; at each, the separation is B's height minus A's.
-  // Only where both heights are exact: a point's own height, or a flat feature's. The plane
-  // through a curved feature's rim lies below its cap by up to the depth: the gap read
-  // from it was several tolerances wider than the true one, and the solver let bones close
-  // through the difference (and where it came out narrower, the projection pushed them
-  // apart by as much). A vertex over a curved feature is left out; two curved pieces touch
-  // at their closest points (below).
   std::vector<std::pair<Vec2, double>> found;  // place on the plane, separation
   std::vector<double> middle;                  // the height midway between the surfaces there
   const auto add = [&](const Vec2& p, double hA, double hB) {
@@ -243,13 +230,11 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
     found.emplace_back(p, hB - hA);
     middle.push_back(0.5 * (hA + hB));
   };
-  if (B.flat)
-    for (std::size_t k = 0; k < A.points.size(); ++k)
-      if (B.contains(A.points[k], eps)) add(A.points[k], A.pointHeight[k], B.heightAt(A.points[k]));
-  if (A.flat)
-    for (std::size_t k = 0; k < B.points.size(); ++k)
-      if (A.contains(B.points[k], eps)) add(B.points[k], A.heightAt(B.points[k]), B.pointHeight[k]);
-  for (const auto& [a0, a1] : A.flat && B.flat ? edgesOf(A) : std::vector<std::pair<std::size_t, std::size_t>>{})
+  for (std::size_t k = 0; k < A.points.size(); ++k)
+    if (B.contains(A.points[k], eps)) add(A.points[k], A.pointHeight[k], B.heightAt(A.points[k]));
+  for (std::size_t k = 0; k < B.points.size(); ++k)
+    if (A.contains(B.points[k], eps)) add(B.points[k], A.heightAt(B.points[k]), B.pointHeight[k]);
+  for (const auto& [a0, a1] : edgesOf(A))
     for (const auto& [b0, b1] : edgesOf(B)) {
       // a0 + s (a1 - a0) = b0 + r (b1 - b0), both in [0, 1]
       const Vec2 d = A.hull[a1] - A.hull[a0], e = B.hull[b1] - B.hull[b0], w = B.hull[b0] - A.hull[a0];
@@ -260,18 +245,6 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
       add(A.hull[a0] + s * d, A.height[a0] + s * (A.height[a1] - A.height[a0]),
           B.height[b0] + r * (B.height[b1] - B.height[b0]));
     }
-  // The closest points are where the pieces touch first: a manifold that has no point as
-  // near as they are takes them too (their separation is the distance, the gap along n
-  // there when n is their direction).
-  {
-    double least = 1e300;
-    for (const auto& f : found) least = std::min(least, f.second);
-    if (!found.empty() && least > distance + 0.5 * eps) {
-      const Vec2 at(u.dot(fallback), v.dot(fallback));
-      found.emplace(found.begin(), at, distance);
-      middle.insert(middle.begin(), n.dot(fallback));
-    }
-  }
   std::vector<ManifoldPoint> out;
   if (found.empty()) {  // features that do not overlap by round-off: the closest points
     ManifoldPoint p;

@@ -300,7 +300,8 @@ bool NarrowPhase<S>::landsAsContact(StepContext& step, int i, int pi, int j, int
   // on paths that reach the interval's end (the next solve's start).
   if (!step.hybrid() || step.frame.isContactPair(i, j) || t1 < step.intervalEnd) return false;
   // Faster than the contact speed the next solve would take it for a collision all the same.
-  if (step.intervalEnd <= step.intervalStart || vn < -step.contactSpeed()) return false;
+  const double dt = step.intervalEnd - step.intervalStart;
+  if (dt <= 0 || vn < -tuning.contactSpeed * step.scene.gravity.norm() * dt) return false;
   if (tc >= step.intervalEnd) return true;  // met at the very end: the next solve's start
   // The rest of the interval, asked with the rest separation as the band: proven clear, the
   // pair ends the interval no nearer than where the solver brings contacts to rest.

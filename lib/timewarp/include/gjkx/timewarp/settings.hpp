@@ -98,13 +98,9 @@ struct StepTuning {
   /// Where the solver brings a contact to rest: this many `tol` apart. 0.5: inside the band
   /// (touching, §2.3), yet apart, so the independent checks see no overlap.
   double restSeparation = 0.5;
-  /// The contact speed, in frames of gravity: a pair within the contact band closing faster
-  /// than this × |g| Δt, Δt a frame, is a collision (an event, with restitution). 2: gravity
-  /// alone closes a resting pair by |g| Δt over a frame; twice that is what only an impact
-  /// gives. A frame, not an interval: the step cuts a frame into contactIntervals or more, and
-  /// a pair does not become a collision because its frame was cut finer (at a quarter of a
-  /// frame the bones resting in the torso's plant, rocked by their neighbours at 0.2 to 0.8
-  /// m/s, were collisions by the hundred in every frame).
+  /// The contact speed, in intervals of gravity: a pair closing faster than this × |g| Δt
+  /// is a collision (an event, with restitution). 2: gravity alone closes a resting pair by
+  /// |g| Δt over an interval; twice that is what only an impact gives.
   double contactSpeed = 2;
   /// Sweeps of sequential impulses in each of the three passes of a group's velocity solve,
   /// at most (a pass stops once no impulse changes a velocity by more than
