@@ -25,8 +25,8 @@
 /// **The contact speed.** A pair resting under gravity closes by at most what gravity adds
 /// over an interval, |g| Δt; anything faster came from an impact and is a collision, its
 /// restitution applied by Mirtich's impulse. The threshold is StepTuning::contactSpeed
-/// intervals of gravity, 2 |g| Δt (0.82 m/s at 24 frames a second), the same order as Box2D's
-/// restitution threshold (1 m/s).
+/// intervals of gravity, 2 |g| Δt (0.2 m/s at 24 frames a second in four intervals), below
+/// Box2D's restitution threshold (1 m/s).
 ///
 /// **Keeping stacks from sinking without adding energy.** Two parts, each of which cannot
 /// add kinetic energy:
