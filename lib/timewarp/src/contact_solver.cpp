@@ -29,7 +29,9 @@ struct SolverBody {
 /// an impulse along d gives each body, \f$I^{-1}(r \times d)\f$.
 struct Row {
   int i, j;                                   // the bodies
-  ManifoldPoint* point;                       // where its impulses are kept
+  double massI, massJ;                        // their inverse masses (zero outside the group)
+  ManifoldPoint* point;                       // where its impulses are kept (written back at the end)
+  double lambda = 0;                          // the normal impulse while the solve runs
   double friction;                            // the pair's mu
   std::array<Eigen::Vector3d, 3> d;           // n, t1, t2
   std::array<Eigen::Vector3d, 3> armI, armJ;  // r_i x d, r_j x d
@@ -90,14 +92,16 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       w[b] = states[b].angularVelocity;
     }
   // An impulse `size` along direction k of a row, and the relative velocity along it.
-  const auto apply = [&](const Row& row, int k, double size) {
-    v[row.i] -= solverBodies[row.i].inverseMass * size * row.d[k];
-    w[row.i] -= size * row.spinI[k];
-    v[row.j] += solverBodies[row.j].inverseMass * size * row.d[k];
-    w[row.j] += size * row.spinJ[k];
+  Eigen::Vector3d* const V = v.data();
+  Eigen::Vector3d* const W = w.data();
+  const auto apply = [V, W](const Row& row, int k, double size) {
+    V[row.i] -= row.massI * size * row.d[k];
+    W[row.i] -= size * row.spinI[k];
+    V[row.j] += row.massJ * size * row.d[k];
+    W[row.j] += size * row.spinJ[k];
   };
-  const auto velocityAlong = [&](const Row& row, int k) {
-    return row.d[k].dot(v[row.j] - v[row.i]) + row.armJ[k].dot(w[row.j]) - row.armI[k].dot(w[row.i]);
+  const auto velocityAlong = [V, W](const Row& row, int k) {
+    return row.d[k].dot(V[row.j] - V[row.i]) + row.armJ[k].dot(W[row.j]) - row.armI[k].dot(W[row.i]);
   };
   const double rest = tuning.restSeparation * tolerance;
   std::vector<Row> rows;
@@ -109,6 +113,9 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       row.i = m->i;
       row.j = m->j;
       row.point = &p;
+      row.massI = I.inverseMass;
+      row.massJ = J.inverseMass;
+      row.lambda = p.normalImpulse;
       row.friction = m->friction;
       const Eigen::Vector3d rI = p.point - I.centre, rJ = p.point - J.centre;
       row.d = {n, n.unitOrthogonal(), Eigen::Vector3d::Zero()};
@@ -131,7 +138,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       // Warm start: last solve's impulses (the friction kept in the contact plane).
       row.f1 = t1.dot(p.frictionImpulse);
       row.f2 = t2.dot(p.frictionImpulse);
-      apply(row, 0, p.normalImpulse);
+      apply(row, 0, row.lambda);
       apply(row, 1, row.f1);
       apply(row, 2, row.f2);
       rows.push_back(row);
@@ -178,12 +185,11 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
           largest = std::max(largest, std::min(speed, change.norm() * row.tangentScale));
         }
       }
-      ManifoldPoint& p = *row.point;
       const double vn = velocityAlong(row, 0);
-      const double old = p.normalImpulse;
-      p.normalImpulse = std::max(0.0, old - row.normalMass * (vn - row.target));
-      apply(row, 0, p.normalImpulse - old);
-      largest = std::max(largest, std::abs(p.normalImpulse - old) / std::max(row.normalMass, 1e-300));
+      const double old = row.lambda;
+      row.lambda = std::max(0.0, old - row.normalMass * (vn - row.target));
+      apply(row, 0, row.lambda - old);
+      largest = std::max(largest, std::abs(row.lambda - old) / std::max(row.normalMass, 1e-300));
     }
     ++out.sweeps;
     return largest;
@@ -199,7 +205,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t r = 0; r < rows.size(); ++r) {
       Row& row = rows[r];
-      limits[r] = row.friction * row.point->normalImpulse;
+      limits[r] = row.friction * row.lambda;
       const double size = std::hypot(row.f1, row.f2);
       if (size > limits[r]) {  // a warm start above the new bound is cut to it
         const double scale = limits[r] / size;
@@ -211,7 +217,10 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     }
     for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
   }
-  for (const Row& row : rows) row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
+  for (const Row& row : rows) {
+    row.point->normalImpulse = row.lambda;
+    row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
+  }
   for (Manifold* m : manifolds)
     for (int b : {m->i, m->j}) {
       states[b].velocity = v[b];
