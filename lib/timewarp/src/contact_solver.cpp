@@ -243,7 +243,7 @@ std::vector<Manifold> findContacts(StepContext& step, NarrowPhase<S>& narrow, do
   const StepTuning& tuning = step.settings.tuning;
   const double tolerance = step.scene.collisionTolerance;
   const double band = step.band(tuning.contactBand);
-  const double contactSpeed = tuning.contactSpeed * step.scene.gravity.norm() * dt;
+  const double contactSpeed = step.contactSpeed();
   // Each body's own box at t0 (its support along each axis), grown by the band: two bodies
   // whose boxes keep apart have no pieces within the band. (The sphere about a rib's centre
   // of mass would hold a dozen neighbours, each pair then tested piece by piece.)

@@ -35,6 +35,7 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   contactSweeps += o.contactSweeps;
   landings += o.landings;
   staticChecks += o.staticChecks;
+  contactImpulses += o.contactImpulses;
   sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
@@ -91,6 +92,7 @@ const std::vector<FrameColumn>& frameColumns() {
       {"cpu_s", [](const FrameReport& r) { return r.cpuSeconds; }, false},
       {"landings", [](const FrameReport& r) { return double(r.counters.landings); }, true},
       {"static_checks", [](const FrameReport& r) { return double(r.counters.staticChecks); }, true},
+      {"contact_impulses", [](const FrameReport& r) { return double(r.counters.contactImpulses); }, true},
   };
   return columns;
 }

@@ -285,6 +285,14 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
       band = std::min(0.5 * r.distance, tolerance);
       windowEnd = std::min(t1, hit.time + look);
       t0 = hit.time;
+    } else if (step.hybrid()) {  // nearer than that (resting): on by the look-ahead, unchecked ...
+      // ... but under the hybrid no longer than its fastest points take to move one tolerance.
+      // A contact struck with no restitution (response.hpp) rests here, where a
+      // microcollision's bounce would have sent it apart, and a box turning on a capsule
+      // sank 2.6 tolerances into it within one unchecked look-ahead.
+      const double drift = speedBound(step.bodies[i]) + speedBound(step.bodies[j]);
+      t0 = hit.time + std::max(tuning.minLookAhead * frameLength,
+                               drift > 0 ? std::min(look, step.scene.collisionTolerance / drift) : look);
     } else {  // nearer than that (resting): on by the look-ahead
       t0 = hit.time + look;
     }
@@ -300,8 +308,7 @@ bool NarrowPhase<S>::landsAsContact(StepContext& step, int i, int pi, int j, int
   // on paths that reach the interval's end (the next solve's start).
   if (!step.hybrid() || step.frame.isContactPair(i, j) || t1 < step.intervalEnd) return false;
   // Faster than the contact speed the next solve would take it for a collision all the same.
-  const double dt = step.intervalEnd - step.intervalStart;
-  if (dt <= 0 || vn < -tuning.contactSpeed * step.scene.gravity.norm() * dt) return false;
+  if (step.intervalEnd <= step.intervalStart || vn < -step.contactSpeed()) return false;
   if (tc >= step.intervalEnd) return true;  // met at the very end: the next solve's start
   // The rest of the interval, asked with the rest separation as the band: proven clear, the
   // pair ends the interval no nearer than where the solver brings contacts to rest.

@@ -45,6 +45,7 @@ struct FrameCounters {
   long sleeping = 0;            ///< bodies asleep at the frame's end
   long landings = 0;            ///< hybrid: pairs that met slowly inside an interval, left to the next one's contact solve (narrow_phase.hpp)
   long staticChecks = 0;        ///< of collisionChecks, the time-of-impact queries of a piece against a static body's piece
+  long contactImpulses = 0;     ///< hybrid: of collisions, impulses on a contact pair closing slower than the contact speed (no restitution; response.hpp)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 

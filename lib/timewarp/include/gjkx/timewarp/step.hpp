@@ -138,6 +138,12 @@ struct StepContext {
   double band(double multiple) const { return multiple * scene.collisionTolerance; }
   /// A frame's length (s).
   double frameLength() const { return 1.0 / scene.frameRate; }
+  /// The hybrid's contact speed over the current interval (m/s, contact_solver.hpp):
+  /// StepTuning::contactSpeed intervals of gravity. A pair within the contact band that
+  /// closes faster is a collision.
+  double contactSpeed() const {
+    return settings.tuning.contactSpeed * scene.gravity.norm() * (intervalEnd - intervalStart);
+  }
   /// The last reliable normal of piece pi of body i against piece pj of body j.
   Eigen::Vector3d& knownNormal(int i, int pi, int j, int pj) {
     return pairNormals.try_emplace(std::array<int, 4>{i, pi, j, pj}, Eigen::Vector3d::Zero()).first->second;
