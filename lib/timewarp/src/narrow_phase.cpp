@@ -287,9 +287,9 @@ bool NarrowPhase<S>::checkPieces(StepContext& step, int i, int pi, int j, int pj
       t0 = hit.time;
     } else if (step.hybrid()) {  // nearer than that (resting): on by the look-ahead, unchecked ...
       // ... but under the hybrid no longer than its fastest points take to move one tolerance.
-      // A contact struck with no restitution (response.hpp) rests here, where a
-      // microcollision's bounce would have sent it apart, and a box turning on a capsule
-      // sank 2.6 tolerances into it within one unchecked look-ahead.
+      // A contact struck with no restitution (response.cpp) rests here, where a
+      // microcollision's bounce would send it apart, and a box turning on a capsule could
+      // sink several tolerances into it within one unchecked sixteenth of a frame.
       const double drift = speedBound(step.bodies[i]) + speedBound(step.bodies[j]);
       t0 = hit.time + std::max(tuning.minLookAhead * frameLength,
                                drift > 0 ? std::min(look, step.scene.collisionTolerance / drift) : look);

@@ -37,8 +37,8 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
     // the contact speed is no collision but a contact (it met before, and no impact drives
     // it): it takes no restitution, and no microcollision's bounce either (the paper's model
     // of resting contact, which the solver replaces). With restitution, such impulses at the
-    // start of an interval ran on through the instant pass as microcollisions, and a pile
-    // that should settle kept bouncing.
+    // start of an interval would run on through the instant pass as microcollisions, and a
+    // pile that should settle would keep bouncing.
     if (step.hybrid() && step.frame.isContactPair(hit.i, hit.j) &&
         hit.normal.dot(bodies[hit.i].rigid.velocityAt(si, hit.contact) - bodies[hit.j].rigid.velocityAt(sj, hit.contact)) <
             step.contactSpeed()) {
