@@ -12,73 +12,17 @@
 // gjkx_simulate and the peers' runners of chapter 08 run the same bodies.
 #include "../command_line.hpp"
 
+#include <gjkx/timewarp/pile.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
 
 #include <cstdio>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <sstream>
 #include <string>
 
 namespace {
-
-/// The scene: a static box open at the top (floor and four walls), `count` bodies in a
-/// loose grid above it with random spins and sideways velocities (seeded).
-gjkx::Scene fallingIntoABox(int count, double duration, unsigned seed) {
-  gjkx::Scene scene;
-  scene.duration = duration;
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(-1, 1);
-  const int side = int(std::ceil(std::cbrt(double(count) / 2)));  // a grid side x side x 2*side
-  const double spacing = 0.45, half = 0.5 * spacing * side + 0.3;
-  auto wall = [&](const char* name, Eigen::Vector3d h, Eigen::Vector3d p) {
-    gjkx::BodySpec b;
-    b.name = name;
-    b.shape.kind = gjkx::ShapeSpec::Kind::Box;
-    b.shape.halfExtents = h;
-    b.position = p;
-    b.isStatic = true;
-    scene.bodies.push_back(b);
-  };
-  wall("floor", {half + 0.2, half + 0.2, 0.1}, {0, 0, -0.1});
-  wall("wall_xm", {0.1, half + 0.2, 2}, {-half - 0.1, 0, 2});
-  wall("wall_xp", {0.1, half + 0.2, 2}, {half + 0.1, 0, 2});
-  wall("wall_ym", {half, 0.1, 2}, {0, -half - 0.1, 2});
-  wall("wall_yp", {half, 0.1, 2}, {0, half + 0.1, 2});
-  for (int k = 0; k < count; ++k) {
-    gjkx::BodySpec b;
-    b.name = "body" + std::to_string(k);
-    const int ix = k % side, iy = (k / side) % side, iz = k / (side * side);
-    b.position = Eigen::Vector3d((ix - 0.5 * (side - 1)) * spacing, (iy - 0.5 * (side - 1)) * spacing, 0.4 + iz * spacing);
-    b.orientation = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized());
-    b.velocity = Eigen::Vector3d(unit(random), unit(random), 0);
-    b.angularVelocity = Eigen::Vector3d(unit(random), unit(random), unit(random)) * 3;
-    switch (k % 4) {
-      case 0:
-        b.shape.kind = gjkx::ShapeSpec::Kind::Box;
-        b.shape.halfExtents = Eigen::Vector3d(0.12, 0.08, 0.06);
-        break;
-      case 1:
-        b.shape.kind = gjkx::ShapeSpec::Kind::Sphere;
-        b.shape.radius = 0.1;
-        break;
-      case 2:
-        b.shape.kind = gjkx::ShapeSpec::Kind::Capsule;
-        b.shape.radius = 0.06;
-        b.shape.halfLength = 0.08;
-        break;
-      default:
-        b.shape.kind = gjkx::ShapeSpec::Kind::Polytope;
-        for (int v = 0; v < 10; ++v)
-          b.shape.points.push_back(Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized() * 0.12);
-        break;
-    }
-    scene.bodies.push_back(b);
-  }
-  return scene;
-}
 
 /// The pile as a scene file (gjkx/timewarp/scene.hpp's keys), every number with all its
 /// digits, so that the file is the same bodies.
@@ -139,7 +83,7 @@ int main(int argc, char** argv) {
 
   if (!writeScene.empty()) {
     std::ofstream file(writeScene);
-    if (!(file << sceneJson(fallingIntoABox(count, duration, 2026), contact))) {
+    if (!(file << sceneJson(gjkx::fallingIntoABox(count, duration, 2026), contact))) {
       std::fprintf(stderr, "timewarp_benchmark: cannot write %s\n", writeScene.c_str());
       return 1;
     }
@@ -160,7 +104,7 @@ int main(int argc, char** argv) {
       {gjkx::Ordering::Timewarp, other}};
   for (const auto& [ordering, model] : runs) {
     if (ordering == gjkx::Ordering::FixedStep && !fixedToo) continue;
-    gjkx::Scene scene = fallingIntoABox(count, duration, 2026);
+    gjkx::Scene scene = gjkx::fallingIntoABox(count, duration, 2026);
     scene.run.ordering = ordering;
     scene.run.contact = model;
     scene.run.scalar = scalar == "float" ? gjkx::CollisionScalar::Float : gjkx::CollisionScalar::Double;
