@@ -174,11 +174,11 @@ int main(int argc, char** argv) {
   const auto writeLog = [&]() {
     if (logPath.empty()) return true;
     std::ofstream log(logPath);
-    log << "time,body,other,piece,other_piece,approach_speed,impulse,microcollision\n";
+    log << "time,body,other,piece,other_piece,approach_speed,impulse,microcollision,contact,separation_speed\n";
     for (const gjkx::CollisionRecord& c : world->collisionLog())
       log << c.time << ',' << world->bodies()[std::size_t(c.i)].name << ',' << world->bodies()[std::size_t(c.j)].name
           << ',' << c.pieceI << ',' << c.pieceJ << ',' << c.approachSpeed << ',' << c.impulse << ','
-          << (c.microcollision ? 1 : 0) << '\n';
+          << (c.microcollision ? 1 : 0) << ',' << (c.contact ? 1 : 0) << ',' << c.separationSpeed << '\n';
     if (!log) std::cerr << "gjkx_simulate: cannot write the collision log " << logPath << "\n";
     return bool(log);
   };

@@ -162,7 +162,7 @@ TEST_CASE("gjkx_simulate overrides duration and frame rate, and writes the colli
   REQUIRE(keys.count("frames") == 1);
   CHECK(keys.at("frames") == "24");  // 0.5 s at 48 frames per second
   REQUIRE(fs::exists(out / "log.csv"));
-  CHECK(firstLine(out / "log.csv") == "time,body,other,piece,other_piece,approach_speed,impulse,microcollision");
+  CHECK(firstLine(out / "log.csv") == "time,body,other,piece,other_piece,approach_speed,impulse,microcollision,contact,separation_speed");
   CHECK(lineCount(out / "log.csv") == 1 + std::stol(keys.at("collisions")));  // a row per collision
   fs::remove_all(out);
 }

@@ -29,6 +29,7 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   const StepTuning& tuning = step.settings.tuning;
   FrameCounters& c = step.frame.report.counters;
   ImpulseResult result;
+  bool contact = false;
   {
     PartTimer timer(step.frame.report.parts.impulses);
     CollisionMaterial material = gjkx::material(step, hit.i, hit.j);
@@ -44,6 +45,7 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
             step.contactSpeed()) {
       material.restitution = 0;
       settings.microcollisionSpeed = 0;
+      contact = true;
       ++c.contactImpulses;
     }
     result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
@@ -54,7 +56,8 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
   if (result.status == ImpulseStatus::StepCap) ++c.impulseCaps;
   if (result.status == ImpulseStatus::Microcollision) ++c.microcollisions;
   step.collisionLog.push_back({hit.time, hit.i, hit.j, hit.pieceI, hit.pieceJ, result.approachSpeed,
-                               result.impulse.norm(), result.status == ImpulseStatus::Microcollision});
+                               result.impulse.norm(), result.status == ImpulseStatus::Microcollision, contact,
+                               result.separationSpeed});
   step.record(TraceEvent::Kind::Collision, hit.i, hit.j, hit.time, hit.time);
   // Zeno's wedge (response.hpp): caught after too many microcollisions from opposite
   // sides (a box sliding on a floor is struck along one normal only), or after too many

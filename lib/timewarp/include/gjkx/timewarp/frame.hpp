@@ -115,6 +115,10 @@ struct CollisionRecord {
   double approachSpeed = 0;    ///< the normal speed at which they closed (m/s, positive)
   double impulse = 0;          ///< the size of the impulse applied (N s)
   bool microcollision = false; ///< a microcollision (restitution 1, below the microcollision speed)
+  /// Under the hybrid: struck as a contact, a pair the contact solver holds closing slower
+  /// than the contact speed (restitution 0, no microcollision's bounce; response.hpp).
+  bool contact = false;
+  double separationSpeed = 0;  ///< the normal speed at which they leave after the impulse (m/s)
 };
 
 /// One record of the trace (WorldSettings::trace): what an ordering did to a body's local time.
