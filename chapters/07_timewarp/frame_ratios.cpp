@@ -10,6 +10,15 @@
 // A frame's cost is its processor time (frames.csv's cpu_s), not its wall time: on a
 // machine other programs share, the wall time counts their turns on the processor too.
 // With --wall the wall time (wall_s, less the independent checks' checks_s) is used instead.
+//
+// A run may be given as LABEL=DIR1,DIR2,...: the same scene run several times. A run is
+// deterministic, so each frame did the same work in each; its cost is then the least of
+// its times (what the machine's load added to the others is left out), and the runs must
+// agree on every frame's collisions and pair checks, else the program exits 1 naming the
+// first frame where they differ. The RUN line then says runs=N, and one more line gives
+// how much the load moved that frame:
+//
+//   RATIO LABEL_slowest_frame_spread=<that frame's largest time over the runs / its least>
 // When two runs are given, one more line compares their slowest frames:
 //
 //   RATIO SECOND_vs_FIRST_slowest_frame=<second's slowest / first's slowest>
@@ -20,6 +29,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -31,13 +41,40 @@ double frameCost(const torso::Run& run, std::size_t k, bool wall) {
   return wall ? run.at("wall_s")[k] - run.at("checks_s")[k] : run.at("cpu_s")[k];
 }
 
+/// The folders of a run's DIR1,DIR2,... (empty names are refused by the caller).
+std::vector<std::string> foldersOf(const std::string& list) {
+  std::vector<std::string> folders;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = list.find(',', start)) != std::string::npos; start = comma + 1)
+    folders.push_back(list.substr(start, comma - start));
+  folders.push_back(list.substr(start));
+  return folders;
+}
+
+/// Throws unless `other` is the same run as `first`, frame by frame: as many frames, and
+/// the same collisions and pair checks in each (a run is deterministic).
+void requireSameRun(const torso::Run& first, const torso::Run& other) {
+  if (other.frames() != first.frames())
+    throw std::runtime_error(other.folder + ": " + std::to_string(other.frames()) + " frames, " + first.folder +
+                             ": " + std::to_string(first.frames()) + ": not runs of the same scene");
+  for (const char* column : {"collisions", "collision_checks"})
+    for (std::size_t k = 0; k < first.frames(); ++k)
+      if (other.at(column)[k] != first.at(column)[k])
+        throw std::runtime_error(other.folder + ": frame " + std::to_string(k + 1) + " has " +
+                                 std::to_string(long(other.at(column)[k])) + " " + column + ", " + first.folder + " " +
+                                 std::to_string(long(first.at(column)[k])) + ": not the same run");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"How far from real time each frame of a gjkx_simulate run was (RATIO lines)", "gjkx_frame_ratios"};
   std::vector<std::string> runs;
   bool wall = false;
-  app.add_option("runs", runs, "LABEL=DIR: a run's label and the folder of its frames.csv")->required();
+  app.add_option("runs", runs,
+                 "LABEL=DIR: a run's label and the folder of its frames.csv; LABEL=DIR1,DIR2,...: the same run repeated, "
+                 "each frame's cost the least of its times")
+      ->required();
   app.add_flag("--wall", wall, "use the wall time (wall_s less checks_s) instead of the processor time (cpu_s)");
   chapter::parseOrExit(app, argc, argv);
 
@@ -50,15 +87,29 @@ int main(int argc, char** argv) {
     }
     const std::string label = run.substr(0, eq);
     // Each frame's cost over its length: 1 is real time.
-    std::vector<double> ratio;
+    std::vector<double> ratio, spread;
     double total = 0;
     torso::Run frames;
+    std::size_t repeats = 0;
     try {
-      frames = torso::readRun(run.substr(eq + 1));
+      std::vector<torso::Run> repeated;
+      for (const std::string& folder : foldersOf(run.substr(eq + 1))) {
+        if (folder.empty()) throw std::runtime_error("'" + run + "': an empty folder name");
+        repeated.push_back(torso::readRun(folder));
+        requireSameRun(repeated.front(), repeated.back());
+      }
+      frames = repeated.front();
+      repeats = repeated.size();
       for (std::size_t k = 0; k < frames.frames(); ++k) {
-        const double cost = frameCost(frames, k, wall), length = frames.frameLength(k);
-        ratio.push_back(length > 0 ? cost / length : 0.0);
-        total += cost;
+        double least = frameCost(frames, k, wall), most = least;
+        for (const torso::Run& again : repeated) {
+          least = std::min(least, frameCost(again, k, wall));
+          most = std::max(most, frameCost(again, k, wall));
+        }
+        const double length = frames.frameLength(k);
+        ratio.push_back(length > 0 ? least / length : 0.0);
+        spread.push_back(least > 0 ? most / least : 1.0);
+        total += least;
       }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "gjkx_frame_ratios: %s\n", e.what());
@@ -70,11 +121,14 @@ int main(int argc, char** argv) {
     std::sort(sorted.begin(), sorted.end());
     const std::size_t n = sorted.size();
     const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-    std::printf("RUN %s frames=%zu simulated_s=%.6g %s=%.4g slowest_at_t=%.4g\n", label.c_str(), n, time.back(),
+    std::printf("RUN %s frames=%zu simulated_s=%.6g %s=%.4g slowest_at_t=%.4g", label.c_str(), n, time.back(),
                 wall ? "wall_s" : "processor_s", total, time[worst]);
+    if (repeats > 1) std::printf(" runs=%zu", repeats);
+    std::printf("\n");
     std::printf("RATIO %s_slowest_frame_vs_real_time=%.4g\n", label.c_str(), ratio[worst]);
     std::printf("RATIO %s_median_frame_vs_real_time=%.4g\n", label.c_str(), median);
     std::printf("RATIO %s_total_vs_real_time=%.4g\n", label.c_str(), total / time.back());
+    if (repeats > 1) std::printf("RATIO %s_slowest_frame_spread=%.4g\n", label.c_str(), spread[worst]);
     slowest.emplace_back(label, ratio[worst]);
   }
   if (slowest.size() == 2)

@@ -9,6 +9,7 @@
 #include <gjkx/timewarp/scene.hpp>
 
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -277,5 +278,54 @@ TEST_CASE("gjkx_simulate --solver paper runs §5 as the paper wrote it, and says
                                   "\" --quiet --solver paper --variant certified");
   CHECK(refused.status == 2);
   CHECK(refused.output.find("--solver paper runs the paper's extrusion test") != std::string::npos);
+  fs::remove_all(out);
+}
+
+TEST_CASE("gjkx_frame_ratios takes each frame's least time over repeated runs, and refuses runs that differ", "[simulate]") {
+  // Two runs of the cradle (deterministic: the same work in each frame), a third of another
+  // scene. Each frame's cost over repeats is the least of its processor times (cpu_s).
+  const fs::path out = freshFolder("ratios");
+  for (const char* run : {"a", "b"})
+    REQUIRE(simulate("\"" + std::string(GJKX_SCENES) + "/cradle.json\" --quiet --out \"" + (out / run).string() + "\"").status == 0);
+  REQUIRE(simulate("\"" + std::string(GJKX_SCENES) + "/dominoes.json\" --quiet --out \"" + (out / "c").string() + "\"").status == 0);
+  const auto csv = [&](const char* run) { return test::readCsv(out / run / "frames.csv"); };
+  const auto a = csv("a"), b = csv("b");
+  REQUIRE(a.size() == b.size());
+  const auto column = [&](const char* name) {
+    return std::size_t(std::find(a[0].begin(), a[0].end(), name) - a[0].begin());
+  };
+  const std::size_t cpu = column("cpu_s"), time = column("time");
+  REQUIRE(cpu < a[0].size());
+  double slowest = 0, single = 0;
+  for (std::size_t k = 1; k < a.size(); ++k) {
+    const double length = std::stod(a[k][time]) - (k > 1 ? std::stod(a[k - 1][time]) : 0.0);
+    slowest = std::max(slowest, std::min(std::stod(a[k][cpu]), std::stod(b[k][cpu])) / length);
+    single = std::max(single, std::stod(a[k][cpu]) / length);
+  }
+  const auto ratio = [](const std::string& output, const std::string& key) {
+    const auto at = output.find("RATIO " + key + "=");
+    REQUIRE(at != std::string::npos);
+    return std::stod(output.substr(at + 7 + key.size()));
+  };
+  const test::ProgramResult both =
+      test::runProgram(GJKX_FRAME_RATIOS, "\"both=" + (out / "a").string() + "," + (out / "b").string() + "\"");
+  INFO(both.output);
+  REQUIRE(both.status == 0);
+  CHECK(both.output.find(" runs=2") != std::string::npos);
+  CHECK(ratio(both.output, "both_slowest_frame_vs_real_time") == Approx(slowest).epsilon(1e-3));
+  CHECK(ratio(both.output, "both_slowest_frame_spread") >= 1.0);
+  const test::ProgramResult one = test::runProgram(GJKX_FRAME_RATIOS, "\"one=" + (out / "a").string() + "\"");
+  REQUIRE(one.status == 0);
+  CHECK(one.output.find("runs=") == std::string::npos);
+  CHECK(one.output.find("spread") == std::string::npos);
+  CHECK(ratio(one.output, "one_slowest_frame_vs_real_time") == Approx(single).epsilon(1e-3));
+  // Not the same run: refused, naming the folder.
+  const test::ProgramResult mixed =
+      test::runProgram(GJKX_FRAME_RATIOS, "\"mixed=" + (out / "a").string() + "," + (out / "c").string() + "\"");
+  CHECK(mixed.status == 1);
+  CHECK(mixed.output.find((out / "c").string()) != std::string::npos);
+  CHECK(mixed.output.find("RATIO") == std::string::npos);
+  // A bad command line: exit 2.
+  CHECK(test::runProgram(GJKX_FRAME_RATIOS, "nolabel").status == 2);
   fs::remove_all(out);
 }
