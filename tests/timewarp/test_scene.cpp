@@ -1,9 +1,11 @@
 // The scene file: every key read, every bad input rejected with the body and the field named.
+#include <gjkx/timewarp/pile.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -237,4 +239,26 @@ TEST_CASE("scene: the key solver asks for §5 as the paper wrote it, and a bad v
   CHECK(parseScene(R"({ "duration": 1, "solver": "paper", )" + bodies).run.solver == ToiSolverMode::Paper);
   CHECK(parseScene(R"({ "duration": 1, "solver": "gjkx", )" + bodies).run.solver == ToiSolverMode::Gjkx);
   CHECK_THROWS_WITH(parseScene(R"({ "duration": 1, "solver": "brent", )" + bodies), Catch::Contains("solver"));
+}
+
+TEST_CASE("scene: the pile is five static walls and the bodies asked for, the same for the same seed") {
+  const Scene a = fallingIntoABox(24, 2, 2026), b = fallingIntoABox(24, 2, 2026), c = fallingIntoABox(24, 2, 7);
+  REQUIRE(a.bodies.size() == 5 + 24);
+  CHECK(a.duration == 2);
+  int walls = 0;
+  for (const BodySpec& body : a.bodies) walls += body.isStatic;
+  CHECK(walls == 5);
+  for (std::size_t k = 5; k < a.bodies.size(); ++k) {  // the same seed: the same bodies, bit for bit
+    CHECK(a.bodies[k].position == b.bodies[k].position);
+    CHECK(a.bodies[k].orientation.coeffs() == b.bodies[k].orientation.coeffs());
+    CHECK(a.bodies[k].angularVelocity == b.bodies[k].angularVelocity);
+  }
+  CHECK(a.bodies[5].orientation.coeffs() != c.bodies[5].orientation.coeffs());  // another seed: other spins
+  // Every moving body starts above the floor and inside the walls, and the scene runs.
+  for (std::size_t k = 5; k < a.bodies.size(); ++k) {
+    CHECK(a.bodies[k].position.z() > 0.3);
+    CHECK(std::abs(a.bodies[k].position.x()) < a.bodies[2].position.x());
+  }
+  World world(a, WorldSettings{});
+  CHECK(world.step().status == FrameStatus::Done);
 }
