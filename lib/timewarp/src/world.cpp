@@ -96,8 +96,9 @@ FrameReport World::step() {
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
   // each a quarter turn of the fastest body at most.
-  // Under Timewarp and the hybrid a body in free flight takes steps of its own instead
-  // (timewarp.hpp): only the group bodies, flown by the contact solver over whole intervals, count.
+  // Under Timewarp and the hybrid a body takes steps of its own instead (timewarp.hpp):
+  // only the group bodies count, whose velocities the contact solver sets once an interval
+  // (a group body turning fast is solved again sooner; its path is cut into quarter turns).
   const bool ownSteps = ownStepsOf(scene_);
   double fastest = 0;
   for (const WorldBody& body : bodies_)
