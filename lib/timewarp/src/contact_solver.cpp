@@ -495,7 +495,7 @@ bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double 
   // Timewarp a body spinning fast flies a quarter turn at a time, as a free body does
   // (ownStepEnd; where its step ends it flies on, on the same velocities): a path holds
   // less than half a turn, and a light body a collision spun up (a cartilage of a few grams
-  // at 377 rad/s in the torso's crash) would otherwise make the whole frame run again.
+  // in the torso's crash) would otherwise make the whole frame run again.
   for (const std::vector<int>& group : groups)
     for (int b : group) {
       bodies[b].contactFlight = true;
