@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace gjkx {
@@ -53,44 +54,53 @@ double response(const SolverBody& I, const SolverBody& J, const Eigen::Vector3d&
          rJ.cross(d).dot(J.inverseInertia * rJ.cross(e));
 }
 
-double kineticEnergy(const StepContext& step, const std::vector<int>& group, const std::vector<BodyState>& states) {
-  double e = 0;
-  for (int b : group) e += step.bodies[b].rigid.kineticEnergy(states[b]);
-  return e;
-}
-
-}  // namespace
-
 // ---------------------------------------------------------------------------------------
-// The velocity solve of a group: sequential impulses (Catto 2005). Each row's impulse is
-// accumulated and clamped (normal impulse >= 0, friction within Coulomb's disc |f| <= mu
-// lambda_n), and each iteration applies only the change, so the result is the projected
-// Gauss-Seidel solution of the contact LCP. Warm-started: each point starts from the
-// impulses it took in the last solve, so a resting stack starts where it ended and the
-// iterations only follow what changed.
-GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
-                      std::vector<BodyState>& states, double dt, bool gravity) {
+// The velocity solve: sequential impulses (Catto 2005). Each row's impulse is accumulated
+// and clamped (normal impulse >= 0, friction within Coulomb's disc |f| <= mu lambda_n), and
+// each iteration applies only the change, so the result is the projected Gauss-Seidel
+// solution of the contact LCP. Warm-started: each point starts from the impulses it took in
+// the last solve, so a resting stack starts where it ended and the iterations only follow
+// what changed. The bodies' states are read and written through `stateOf(b)`; the sweeps
+// work on the velocities of the bodies the manifolds name, side by side.
+template <typename StateOf>
+GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& group,
+                              const std::vector<Manifold*>& manifolds, StateOf&& stateOf, double dt, bool gravity,
+                              double settled, int budget) {
   const StepTuning& tuning = step.settings.tuning;
-  const double tolerance = step.scene.collisionTolerance;
-  std::vector<SolverBody> solverBodies(step.bodies.size());
+  const double rest = tuning.restSeparation * step.scene.collisionTolerance;
+  const auto kineticEnergy = [&] {
+    double e = 0;
+    for (int b : group) e += step.bodies[b].rigid.kineticEnergy(stateOf(b));
+    return e;
+  };
+  // The solve's bodies: those the manifolds name, each a slot (group members move; a static
+  // or sleeping body keeps the zero inverse mass and inertia).
+  std::vector<int> slotOf(step.bodies.size(), -1), bodyOf;
+  for (const Manifold* m : manifolds)
+    for (int b : {m->i, m->j})
+      if (slotOf[b] < 0) {
+        slotOf[b] = int(bodyOf.size());
+        bodyOf.push_back(b);
+      }
+  std::vector<SolverBody> solverBodies(bodyOf.size());
   for (int b : group) {
-    const WorldBody& body = step.bodies[b];
-    SolverBody& s = solverBodies[b];
-    s.inverseMass = body.rigid.inverseMass();
-    s.inverseInertia = body.rigid.inverseInertiaWorld(states[b].worldFromBody.rotation);
-    if (gravity) states[b].velocity += step.scene.gravity * dt;
+    BodyState& state = stateOf(b);
+    if (gravity) state.velocity += step.scene.gravity * dt;
+    if (slotOf[b] < 0) continue;
+    SolverBody& s = solverBodies[slotOf[b]];
+    s.inverseMass = step.bodies[b].rigid.inverseMass();
+    s.inverseInertia = step.bodies[b].rigid.inverseInertiaWorld(state.worldFromBody.rotation);
   }
-  for (Manifold* m : manifolds)
-    for (int b : {m->i, m->j}) solverBodies[b].centre = states[b].worldFromBody.translation;
   GroupSolve out;
-  out.kineticBefore = kineticEnergy(step, group, states);
-  // The velocities the sweeps change, side by side (a body's state is read back at the end).
-  std::vector<Eigen::Vector3d> v(step.bodies.size()), w(step.bodies.size());
-  for (Manifold* m : manifolds)
-    for (int b : {m->i, m->j}) {
-      v[b] = states[b].velocity;
-      w[b] = states[b].angularVelocity;
-    }
+  out.kineticBefore = kineticEnergy();
+  // The velocities the sweeps change (each body's state is written back at the end).
+  std::vector<Eigen::Vector3d> v(bodyOf.size()), w(bodyOf.size());
+  for (std::size_t k = 0; k < bodyOf.size(); ++k) {
+    const BodyState& state = stateOf(bodyOf[k]);
+    solverBodies[k].centre = state.worldFromBody.translation;
+    v[k] = state.velocity;
+    w[k] = state.angularVelocity;
+  }
   // An impulse `size` along direction k of a row, and the relative velocity along it.
   Eigen::Vector3d* const V = v.data();
   Eigen::Vector3d* const W = w.data();
@@ -103,15 +113,14 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   const auto velocityAlong = [V, W](const Row& row, int k) {
     return row.d[k].dot(V[row.j] - V[row.i]) + row.armJ[k].dot(W[row.j]) - row.armI[k].dot(W[row.i]);
   };
-  const double rest = tuning.restSeparation * tolerance;
   std::vector<Row> rows;
   for (Manifold* m : manifolds) {
-    const SolverBody &I = solverBodies[m->i], &J = solverBodies[m->j];
+    const SolverBody &I = solverBodies[slotOf[m->i]], &J = solverBodies[slotOf[m->j]];
     const Eigen::Vector3d& n = m->normal;
     for (ManifoldPoint& p : m->points) {
       Row row;
-      row.i = m->i;
-      row.j = m->j;
+      row.i = slotOf[m->i];
+      row.j = slotOf[m->j];
       row.point = &p;
       row.massI = I.inverseMass;
       row.massJ = J.inverseMass;
@@ -144,16 +153,15 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       rows.push_back(row);
     }
   }
-  // Sweeps until no impulse changes the velocity at its point by more than contactSettled
-  // (a tenth) of the speed that closes the rest separation in the interval (StepTuning::contactIterations
-  // at most). The rows go from the bottom up (against gravity): the weight of a stack
-  // reaches the floor in one sweep, as Guendelman et al. order their contact graph.
+  // Sweeps until no impulse changes the velocity at its point by more than `settled`
+  // (StepTuning::contactIterations at most). The rows go from the bottom up (against
+  // gravity): the weight of a stack reaches the floor in one sweep, as Guendelman et al.
+  // order their contact graph.
   if (step.scene.gravity.squaredNorm() > 0) {
     const Eigen::Vector3d up = -step.scene.gravity.normalized();
     std::stable_sort(rows.begin(), rows.end(),
                      [&](const Row& a, const Row& b) { return up.dot(a.point->point) < up.dot(b.point->point); });
   }
-  const double settled = tuning.contactSettled * rest / dt;
   // One sweep over the rows: with friction, the tangent impulse within Coulomb's disc of
   // radius limit, then the normal. Returns the largest velocity change it made.
   std::vector<double> limits(rows.size(), 0.0);
@@ -200,7 +208,6 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   // with the bounds mu lambda_n of the last pass, twice. With its bounds fixed each pass is
   // projected Gauss-Seidel on a convex quadratic program, and each of its steps can only
   // lower the kinetic energy.
-  const int budget = tuning.contactIterations;  // per pass
   for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -221,12 +228,53 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     row.point->normalImpulse = row.lambda;
     row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
   }
-  for (Manifold* m : manifolds)
-    for (int b : {m->i, m->j}) {
-      states[b].velocity = v[b];
-      states[b].angularVelocity = w[b];
-    }
-  out.kineticAfter = kineticEnergy(step, group, states);
+  for (std::size_t k = 0; k < bodyOf.size(); ++k) {
+    BodyState& state = stateOf(bodyOf[k]);
+    state.velocity = v[k];
+    state.angularVelocity = w[k];
+  }
+  out.kineticAfter = kineticEnergy();
+  return out;
+}
+
+}  // namespace
+
+GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
+                      std::vector<BodyState>& states, double dt, bool gravity) {
+  // Converged once no impulse changes the velocity at its point by more than contactSettled
+  // (a tenth) of the speed that closes the rest separation in the interval.
+  const StepTuning& tuning = step.settings.tuning;
+  const double settled = tuning.contactSettled * tuning.restSeparation * step.scene.collisionTolerance / dt;
+  return sequentialImpulses(step, group, manifolds, [&](int b) -> BodyState& { return states[b]; }, dt, gravity,
+                            settled, tuning.contactIterations);
+}
+
+StruckContact strikeContact(const StepContext& step, const Hit& hit, const ContactPatch& patch, double friction,
+                            BodyState& si, BodyState& sj) {
+  const RigidBody &A = step.bodies[hit.i].rigid, &B = step.bodies[hit.j].rigid;
+  const auto normalSpeed = [&](const Eigen::Vector3d& p) { return hit.normal.dot(B.velocityAt(sj, p) - A.velocityAt(si, p)); };
+  StruckContact out;
+  out.approachSpeed = -normalSpeed(hit.contact);
+  Manifold m{hit.i, hit.pieceI, hit.j, hit.pieceJ, hit.normal, friction, {}};
+  for (const Eigen::Vector3d& p : patch.points) {
+    ManifoldPoint point;
+    point.point = p;  // on the plane midway between the surfaces: separation 0, target 0
+    m.points.push_back(point);
+  }
+  std::vector<int> group;
+  for (int b : {hit.i, hit.j})
+    if (!step.bodies[b].rigid.isStatic()) group.push_back(b);
+  std::vector<Manifold*> manifolds{&m};
+  // Solved until no sweep changes a point's velocity by a billionth of the approach (a
+  // few rows on two bodies), so that the pair leaves at zero normal speed where it is held. (No
+  // gravity, and every point at separation 0 whose target is 0: the interval plays no part.)
+  out.solve = sequentialImpulses(step, group, manifolds, [&](int b) -> BodyState& { return b == hit.i ? si : sj; },
+                                 1.0, false, 1e-9 * std::max(out.approachSpeed, 0.0), step.settings.tuning.contactIterations);
+  out.separationSpeed = std::numeric_limits<double>::infinity();
+  for (const ManifoldPoint& p : m.points) {
+    out.impulse += p.normalImpulse * hit.normal + p.frictionImpulse;
+    out.separationSpeed = std::min(out.separationSpeed, normalSpeed(p.point));
+  }
   return out;
 }
 

@@ -24,7 +24,7 @@ CollisionMaterial material(const StepContext& step, int i, int j) {
 
 }  // namespace
 
-void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj) {
+void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch* patch) {
   std::vector<WorldBody>& bodies = step.bodies;
   const StepTuning& tuning = step.settings.tuning;
   FrameCounters& c = step.frame.report.counters;
@@ -48,8 +48,18 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
       contact = true;
       ++c.contactImpulses;
     }
-    result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
-                              material, settings);
+    if (contact && patch) {
+      // Struck over its whole patch, each point with its own friction (strikeContact).
+      const StruckContact struck = strikeContact(step, hit, *patch, material.friction, si, sj);
+      result.status = ImpulseStatus::Collision;
+      result.impulse = struck.impulse;
+      result.approachSpeed = struck.approachSpeed;
+      result.separationSpeed = struck.separationSpeed;
+      if (struck.solve.kineticAfter > struck.solve.kineticBefore * (1 + 1e-9) + 1e-12) ++c.energyRises;
+    } else {
+      result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
+                                material, settings);
+    }
   }
   ++c.collisions;
   c.impulseSteps += result.integratorSteps;
@@ -180,7 +190,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     step.frame.collidedPairs.emplace_back(struck.i, struck.j);
     Body& bi = inPass(struck.i);
     Body& bj = inPass(struck.j);
-    applyImpulse(step, struck, bi.state, bj.state);
+    applyImpulse(step, struck, bi.state, bj.state, links[k].patch ? &*links[k].patch : nullptr);
     bi.changed = bj.changed = true;
     for (int b : {struck.i, struck.j}) {
       if (!instantPass || bodies[b].rigid.isStatic()) continue;
