@@ -324,6 +324,16 @@ TEST_CASE("hybrid: the manifold of a box on a floor is its four corners, of a bo
   // A face normal is exact where GJK's is off by a milliradian.
   const Eigen::Vector3d tiltedUp = Eigen::Vector3d(1e-3, 0, 1).normalized();
   CHECK((faceNormal(floor, floorPose, cube, cubePose, tiltedUp, 0.01) - up).norm() < 1e-12);
+  // A patch of a rectangle's corners and its edges' midpoints is reduced to the corners
+  // (fourOf: the largest area), and one of four points or fewer is kept as it is.
+  std::vector<Eigen::Vector3d> patch;
+  for (const double x : {-1.0, 0.0, 1.0})
+    for (const double y : {-0.5, 0.0, 0.5})
+      if (x != 0 || y != 0) patch.emplace_back(x, y, 0.25);
+  const std::vector<Eigen::Vector3d> four = fourOf(patch, up);
+  REQUIRE(four.size() == 4);
+  for (const Eigen::Vector3d& p : four) CHECK((std::abs(std::abs(p.x()) - 1) < 1e-12 && std::abs(std::abs(p.y()) - 0.5) < 1e-12));
+  CHECK(fourOf({patch[0], patch[1]}, up).size() == 2);
 }
 
 TEST_CASE("hybrid: in a pile, a pair the solver holds that closes slower than the contact speed is struck with no bounce") {

@@ -80,8 +80,8 @@ struct StruckContact {
 };
 
 /// §6's hybrid: the impulse of a *contact* struck inside an interval (response.cpp: a pair
-/// the solver holds that closes slower than the contact speed). Its patch's points are one
-/// manifold, solved by the group solver's sequential impulses with no gravity and no
+/// the solver holds that closes slower than the contact speed). Its patch's points, reduced
+/// to four that keep its area (fourOf), are one manifold, solved by the group solver's sequential impulses with no gravity and no
 /// restitution: each point's normal impulse stops its approach, and each point's Coulomb
 /// friction acts against its own slip. (One impulse at the patch's centre, as Mirtich's for
 /// a collision, has no lever about the normal: a box spinning flat on a floor slips at its
