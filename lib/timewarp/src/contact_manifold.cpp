@@ -211,21 +211,6 @@ Eigen::Vector3d faceNormal(const Shape<double>& shapeA, const Pose<double>& pose
   return da >= db ? a : b;
 }
 
-std::vector<Eigen::Vector3d> fourOf(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal) {
-  if (points.size() <= 4) return points;
-  const Eigen::Vector3d u = normal.unitOrthogonal(), v = normal.cross(u);
-  std::vector<std::pair<Vec2, double>> onPlane;
-  for (const Eigen::Vector3d& p : points) onPlane.emplace_back(Vec2(u.dot(p), v.dot(p)), 0.0);
-  std::vector<Eigen::Vector3d> out;
-  for (const auto& kept : reduced(onPlane))
-    for (std::size_t k = 0; k < points.size(); ++k)
-      if (onPlane[k].first == kept.first) {
-        out.push_back(points[k]);
-        break;
-      }
-  return out;
-}
-
 std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Pose<double>& poseA,
                                            const Shape<double>& shapeB, const Pose<double>& poseB,
                                            const Eigen::Vector3d& normal, double depth,

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numeric>
 
 namespace gjkx {
@@ -247,37 +246,6 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   const double settled = tuning.contactSettled * tuning.restSeparation * step.scene.collisionTolerance / dt;
   return sequentialImpulses(step, group, manifolds, [&](int b) -> BodyState& { return states[b]; }, dt, gravity,
                             settled, tuning.contactIterations);
-}
-
-StruckContact strikeContact(const StepContext& step, const Hit& hit, const ContactPatch& patch, double friction,
-                            BodyState& si, BodyState& sj) {
-  const RigidBody &A = step.bodies[hit.i].rigid, &B = step.bodies[hit.j].rigid;
-  const auto normalSpeed = [&](const Eigen::Vector3d& p) { return hit.normal.dot(B.velocityAt(sj, p) - A.velocityAt(si, p)); };
-  StruckContact out;
-  out.approachSpeed = -normalSpeed(hit.contact);
-  Manifold m{hit.i, hit.pieceI, hit.j, hit.pieceJ, hit.normal, friction, {}};
-  for (const Eigen::Vector3d& p : fourOf(patch.points, hit.normal)) {
-    ManifoldPoint point;
-    point.point = p;  // on the plane midway between the surfaces: separation 0, target 0
-    m.points.push_back(point);
-  }
-  std::vector<int> group;
-  for (int b : {hit.i, hit.j})
-    if (!step.bodies[b].rigid.isStatic()) group.push_back(b);
-  std::vector<Manifold*> manifolds{&m};
-  // The patch's points reduced to four that keep its area, as the manifolds are (a bone's
-  // dome of vertices gives a dozen, and a struck contact's sweeps cost as many rows), solved
-  // until no sweep changes a point's velocity by a millionth of the approach: the pair leaves
-  // at zero normal speed where it is held, to that. (No gravity, and every point at
-  // separation 0, whose target is 0: the interval's length plays no part.)
-  out.solve = sequentialImpulses(step, group, manifolds, [&](int b) -> BodyState& { return b == hit.i ? si : sj; },
-                                 1.0, false, 1e-6 * std::max(out.approachSpeed, 0.0), step.settings.tuning.contactIterations);
-  out.separationSpeed = std::numeric_limits<double>::infinity();
-  for (const ManifoldPoint& p : m.points) {
-    out.impulse += p.normalImpulse * hit.normal + p.frictionImpulse;
-    out.separationSpeed = std::min(out.separationSpeed, normalSpeed(p.point));
-  }
-  return out;
 }
 
 // ---------------------------------------------------------------------------------------

@@ -22,6 +22,37 @@ CollisionMaterial material(const StepContext& step, int i, int j) {
   return CollisionMaterial{restitution, friction};
 }
 
+/// Coulomb friction about the normal of a contact struck over a patch (twist friction, as
+/// Bullet's spinning friction and MuJoCo's torsional friction). Mirtich's impulse acts at
+/// the patch's centre, where a box spinning flat on a floor does not slip: its corners do.
+/// With the normal impulse \f$\lambda_n\f$ shared by the patch's points (the corners
+/// of a face, as the contact solver's manifold shares a group's weight), each point r_k from
+/// the centre slipping at \f$\omega\,|r_k|\f$ feels \f$\mu\lambda_n / K\f$ against its
+/// slip: an angular impulse about the normal of at most
+/// \f$\mu\lambda_n \bar r\f$, \f$\bar r\f$ the points' mean distance from the centre.
+/// The angular impulse \f$\tau\f$ that stops the relative spin \f$w = n\cdot(\omega_j -
+/// \omega_i)\f$ is \f$-w / k\f$, \f$k = n\cdot(I_i^{-1} + I_j^{-1})\,n\f$; it is cut to
+/// the limit. Between 0 and the stopping impulse, the kinetic energy only falls (its change
+/// is \f$\tau w + \tfrac12 k \tau^2 \le 0\f$).
+void twistFriction(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b, const ContactPatch& patch,
+                   const Eigen::Vector3d& n, double limitPerLever) {
+  if (patch.points.size() < 2) return;  // a point: no lever about the normal
+  double lever = 0;
+  for (const Eigen::Vector3d& p : patch.points) {
+    const Eigen::Vector3d r = p - patch.centre;
+    lever += (r - n * n.dot(r)).norm();
+  }
+  lever /= double(patch.points.size());
+  const Eigen::Vector3d spinA = A.inverseInertiaWorld(a.worldFromBody.rotation) * n;
+  const Eigen::Vector3d spinB = B.inverseInertiaWorld(b.worldFromBody.rotation) * n;
+  const double k = n.dot(spinA) + n.dot(spinB);
+  if (!(k > 0)) return;
+  const double limit = limitPerLever * lever;
+  const double tau = std::clamp(-n.dot(b.angularVelocity - a.angularVelocity) / k, -limit, limit);
+  a.angularVelocity -= tau * spinA;
+  b.angularVelocity += tau * spinB;
+}
+
 }  // namespace
 
 void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch* patch) {
@@ -48,18 +79,11 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
       contact = true;
       ++c.contactImpulses;
     }
-    if (contact && patch) {
-      // Struck over its whole patch, each point with its own friction (strikeContact).
-      const StruckContact struck = strikeContact(step, hit, *patch, material.friction, si, sj);
-      result.status = ImpulseStatus::Collision;
-      result.impulse = struck.impulse;
-      result.approachSpeed = struck.approachSpeed;
-      result.separationSpeed = struck.separationSpeed;
-      if (struck.solve.kineticAfter > struck.solve.kineticBefore * (1 + 1e-9) + 1e-12) ++c.energyRises;
-    } else {
-      result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
-                                material, settings);
-    }
+    result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
+                              material, settings);
+    if (contact && patch && result.status != ImpulseStatus::Separating)
+      twistFriction(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, *patch, hit.normal,
+                    material.friction * std::abs(hit.normal.dot(result.impulse)));
   }
   ++c.collisions;
   c.impulseSteps += result.integratorSteps;

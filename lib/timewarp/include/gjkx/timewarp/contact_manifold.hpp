@@ -52,10 +52,6 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
                                            const Eigen::Vector3d& normal, double depth,
                                            const Eigen::Vector3d& fallback, double distance, double tolerance);
 
-/// Up to four of `points` (on a plane normal to unit `normal`) that keep the largest area:
-/// contactManifold's reduction (Box2D's and Bullet's), for a contact patch (strikeContact).
-std::vector<Eigen::Vector3d> fourOf(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& normal);
-
 /// The contact normal of A and B refined to a face: where the touching feature of A or of B
 /// (within `depth` of its supporting plane along `normal`) is a face, its own normal (the one
 /// nearer `normal`, if within 10 degrees of it), else `normal`. GJK's closest points give the

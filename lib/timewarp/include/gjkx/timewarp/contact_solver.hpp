@@ -46,7 +46,6 @@
 /// stacking", SIGGRAPH 2003 (the position correction kept apart from the velocities).
 #pragma once
 
-#include <gjkx/timewarp/contact.hpp>
 #include <gjkx/timewarp/contact_manifold.hpp>
 #include <gjkx/timewarp/step.hpp>
 
@@ -70,25 +69,6 @@ struct GroupSolve {
 /// updated. Gravity's impulse is added first when `gravity` is true.
 GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
                       std::vector<BodyState>& states, double dt, bool gravity);
-
-/// What strikeContact did.
-struct StruckContact {
-  double approachSpeed = 0;    ///< \f$-u_n\f$ at the hit's point before (positive: closing)
-  double separationSpeed = 0;  ///< the least \f$u_n\f$ over the patch's points after (0: held, no bounce)
-  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  ///< the whole impulse on body j, all points (−it on i)
-  GroupSolve solve;            ///< the solve's energies and sweeps
-};
-
-/// §6's hybrid: the impulse of a *contact* struck inside an interval (response.cpp: a pair
-/// the solver holds that closes slower than the contact speed). Its patch's points, reduced
-/// to four that keep its area (fourOf), are one manifold, solved by the group solver's sequential impulses with no gravity and no
-/// restitution: each point's normal impulse stops its approach, and each point's Coulomb
-/// friction acts against its own slip. (One impulse at the patch's centre, as Mirtich's for
-/// a collision, has no lever about the normal: a box spinning flat on a floor slips at its
-/// corners, not at its centre, and felt none of the friction that slows it.) `friction` is
-/// the pair's μ; si and sj are the bodies' states at the hit, changed in place.
-StruckContact strikeContact(const StepContext& step, const Hit& hit, const ContactPatch& patch, double friction,
-                            BodyState& si, BodyState& sj);
 
 /// The hybrid's part of a step at the start of the interval [t0, t1]: finds the contacts,
 /// forms the groups, projects and solves each, and flies its bodies over the interval on

@@ -30,8 +30,8 @@ namespace gjkx {
 
 /// The impulse of one collision at `hit.contact`, applied to the states si and sj at the
 /// time of impact, counted, logged and traced; then Zeno's wedge (a body may be caught).
-/// Under the hybrid, a contact struck inside an interval acts over its `patch`, when given
-/// (strikeContact).
+/// Under the hybrid, a contact struck inside an interval also takes the Coulomb friction of
+/// its `patch` about the normal, when given (twist friction: response.cpp).
 void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch* patch = nullptr);
 
 /// A collision at t_c: its impulse, then (with `instantPass`) the impulses it sets off at
