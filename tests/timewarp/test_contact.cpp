@@ -403,7 +403,7 @@ TEST_CASE("hybrid: a box spinning flat on the floor slows at the rate of Coulomb
   // torque mu m g r against I = m (a^2 + b^2) / 3, a constant deceleration
   // 3 mu g / sqrt(a^2 + b^2), until it stops. The contacts struck inside an interval carry
   // a share of its weight too, at the patch's centre, where the box does not slip: without
-  // their twist friction (response.cpp) it slowed at a third of this.
+  // their twist friction (response.cpp) that share would not slow the spin at all.
   const double a = 0.1, b = 0.05, h = 0.02, mu = 0.5, w0 = 100;
   const double alpha = 3 * mu * g / std::hypot(a, b);  // 131.6 rad/s^2: stops at 0.76 s
   const Scene scene = sceneOf(R"("duration": 1.2, "restitution": 0.5, "friction": 0.5)",

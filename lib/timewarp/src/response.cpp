@@ -25,7 +25,7 @@ CollisionMaterial material(const StepContext& step, int i, int j) {
 /// Coulomb friction about the normal of a contact struck over a patch (twist friction, as
 /// Bullet's spinning friction and MuJoCo's torsional friction). Mirtich's impulse acts at
 /// the patch's centre, where a box spinning flat on a floor does not slip: its corners do.
-/// With the normal impulse \f$\lambda_n\f$ shared by the patch's points (the corners
+/// With the normal impulse \f$\lambda_n\f$ shared by the patch's K points (the corners
 /// of a face, as the contact solver's manifold shares a group's weight), each point r_k from
 /// the centre slipping at \f$\omega\,|r_k|\f$ feels \f$\mu\lambda_n / K\f$ against its
 /// slip: an angular impulse about the normal of at most
