@@ -53,53 +53,44 @@ double response(const SolverBody& I, const SolverBody& J, const Eigen::Vector3d&
          rJ.cross(d).dot(J.inverseInertia * rJ.cross(e));
 }
 
+double kineticEnergy(const StepContext& step, const std::vector<int>& group, const std::vector<BodyState>& states) {
+  double e = 0;
+  for (int b : group) e += step.bodies[b].rigid.kineticEnergy(states[b]);
+  return e;
+}
+
+}  // namespace
+
 // ---------------------------------------------------------------------------------------
-// The velocity solve: sequential impulses (Catto 2005). Each row's impulse is accumulated
-// and clamped (normal impulse >= 0, friction within Coulomb's disc |f| <= mu lambda_n), and
-// each iteration applies only the change, so the result is the projected Gauss-Seidel
-// solution of the contact LCP. Warm-started: each point starts from the impulses it took in
-// the last solve, so a resting stack starts where it ended and the iterations only follow
-// what changed. The bodies' states are read and written through `stateOf(b)`; the sweeps
-// work on the velocities of the bodies the manifolds name, side by side.
-template <typename StateOf>
-GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& group,
-                              const std::vector<Manifold*>& manifolds, StateOf&& stateOf, double dt, bool gravity,
-                              double settled, int budget) {
+// The velocity solve of a group: sequential impulses (Catto 2005). Each row's impulse is
+// accumulated and clamped (normal impulse >= 0, friction within Coulomb's disc |f| <= mu
+// lambda_n), and each iteration applies only the change, so the result is the projected
+// Gauss-Seidel solution of the contact LCP. Warm-started: each point starts from the
+// impulses it took in the last solve, so a resting stack starts where it ended and the
+// iterations only follow what changed.
+GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
+                      std::vector<BodyState>& states, double dt, bool gravity) {
   const StepTuning& tuning = step.settings.tuning;
-  const double rest = tuning.restSeparation * step.scene.collisionTolerance;
-  const auto kineticEnergy = [&] {
-    double e = 0;
-    for (int b : group) e += step.bodies[b].rigid.kineticEnergy(stateOf(b));
-    return e;
-  };
-  // The solve's bodies: those the manifolds name, each a slot (group members move; a static
-  // or sleeping body keeps the zero inverse mass and inertia).
-  std::vector<int> slotOf(step.bodies.size(), -1), bodyOf;
-  for (const Manifold* m : manifolds)
-    for (int b : {m->i, m->j})
-      if (slotOf[b] < 0) {
-        slotOf[b] = int(bodyOf.size());
-        bodyOf.push_back(b);
-      }
-  std::vector<SolverBody> solverBodies(bodyOf.size());
+  const double tolerance = step.scene.collisionTolerance;
+  std::vector<SolverBody> solverBodies(step.bodies.size());
   for (int b : group) {
-    BodyState& state = stateOf(b);
-    if (gravity) state.velocity += step.scene.gravity * dt;
-    if (slotOf[b] < 0) continue;
-    SolverBody& s = solverBodies[slotOf[b]];
-    s.inverseMass = step.bodies[b].rigid.inverseMass();
-    s.inverseInertia = step.bodies[b].rigid.inverseInertiaWorld(state.worldFromBody.rotation);
+    const WorldBody& body = step.bodies[b];
+    SolverBody& s = solverBodies[b];
+    s.inverseMass = body.rigid.inverseMass();
+    s.inverseInertia = body.rigid.inverseInertiaWorld(states[b].worldFromBody.rotation);
+    if (gravity) states[b].velocity += step.scene.gravity * dt;
   }
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) solverBodies[b].centre = states[b].worldFromBody.translation;
   GroupSolve out;
-  out.kineticBefore = kineticEnergy();
-  // The velocities the sweeps change (each body's state is written back at the end).
-  std::vector<Eigen::Vector3d> v(bodyOf.size()), w(bodyOf.size());
-  for (std::size_t k = 0; k < bodyOf.size(); ++k) {
-    const BodyState& state = stateOf(bodyOf[k]);
-    solverBodies[k].centre = state.worldFromBody.translation;
-    v[k] = state.velocity;
-    w[k] = state.angularVelocity;
-  }
+  out.kineticBefore = kineticEnergy(step, group, states);
+  // The velocities the sweeps change, side by side (a body's state is read back at the end).
+  std::vector<Eigen::Vector3d> v(step.bodies.size()), w(step.bodies.size());
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) {
+      v[b] = states[b].velocity;
+      w[b] = states[b].angularVelocity;
+    }
   // An impulse `size` along direction k of a row, and the relative velocity along it.
   Eigen::Vector3d* const V = v.data();
   Eigen::Vector3d* const W = w.data();
@@ -112,14 +103,15 @@ GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& g
   const auto velocityAlong = [V, W](const Row& row, int k) {
     return row.d[k].dot(V[row.j] - V[row.i]) + row.armJ[k].dot(W[row.j]) - row.armI[k].dot(W[row.i]);
   };
+  const double rest = tuning.restSeparation * tolerance;
   std::vector<Row> rows;
   for (Manifold* m : manifolds) {
-    const SolverBody &I = solverBodies[slotOf[m->i]], &J = solverBodies[slotOf[m->j]];
+    const SolverBody &I = solverBodies[m->i], &J = solverBodies[m->j];
     const Eigen::Vector3d& n = m->normal;
     for (ManifoldPoint& p : m->points) {
       Row row;
-      row.i = slotOf[m->i];
-      row.j = slotOf[m->j];
+      row.i = m->i;
+      row.j = m->j;
       row.point = &p;
       row.massI = I.inverseMass;
       row.massJ = J.inverseMass;
@@ -152,15 +144,16 @@ GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& g
       rows.push_back(row);
     }
   }
-  // Sweeps until no impulse changes the velocity at its point by more than `settled`
-  // (StepTuning::contactIterations at most). The rows go from the bottom up (against
-  // gravity): the weight of a stack reaches the floor in one sweep, as Guendelman et al.
-  // order their contact graph.
+  // Sweeps until no impulse changes the velocity at its point by more than contactSettled
+  // (a tenth) of the speed that closes the rest separation in the interval (StepTuning::contactIterations
+  // at most). The rows go from the bottom up (against gravity): the weight of a stack
+  // reaches the floor in one sweep, as Guendelman et al. order their contact graph.
   if (step.scene.gravity.squaredNorm() > 0) {
     const Eigen::Vector3d up = -step.scene.gravity.normalized();
     std::stable_sort(rows.begin(), rows.end(),
                      [&](const Row& a, const Row& b) { return up.dot(a.point->point) < up.dot(b.point->point); });
   }
+  const double settled = tuning.contactSettled * rest / dt;
   // One sweep over the rows: with friction, the tangent impulse within Coulomb's disc of
   // radius limit, then the normal. Returns the largest velocity change it made.
   std::vector<double> limits(rows.size(), 0.0);
@@ -207,6 +200,7 @@ GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& g
   // with the bounds mu lambda_n of the last pass, twice. With its bounds fixed each pass is
   // projected Gauss-Seidel on a convex quadratic program, and each of its steps can only
   // lower the kinetic energy.
+  const int budget = tuning.contactIterations;  // per pass
   for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -227,25 +221,13 @@ GroupSolve sequentialImpulses(const StepContext& step, const std::vector<int>& g
     row.point->normalImpulse = row.lambda;
     row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
   }
-  for (std::size_t k = 0; k < bodyOf.size(); ++k) {
-    BodyState& state = stateOf(bodyOf[k]);
-    state.velocity = v[k];
-    state.angularVelocity = w[k];
-  }
-  out.kineticAfter = kineticEnergy();
+  for (Manifold* m : manifolds)
+    for (int b : {m->i, m->j}) {
+      states[b].velocity = v[b];
+      states[b].angularVelocity = w[b];
+    }
+  out.kineticAfter = kineticEnergy(step, group, states);
   return out;
-}
-
-}  // namespace
-
-GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, std::vector<Manifold*>& manifolds,
-                      std::vector<BodyState>& states, double dt, bool gravity) {
-  // Converged once no impulse changes the velocity at its point by more than contactSettled
-  // (a tenth) of the speed that closes the rest separation in the interval.
-  const StepTuning& tuning = step.settings.tuning;
-  const double settled = tuning.contactSettled * tuning.restSeparation * step.scene.collisionTolerance / dt;
-  return sequentialImpulses(step, group, manifolds, [&](int b) -> BodyState& { return states[b]; }, dt, gravity,
-                            settled, tuning.contactIterations);
 }
 
 // ---------------------------------------------------------------------------------------

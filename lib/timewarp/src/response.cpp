@@ -35,7 +35,7 @@ CollisionMaterial material(const StepContext& step, int i, int j) {
 /// the limit. Between 0 and the stopping impulse, the kinetic energy only falls (its change
 /// is \f$\tau w + \tfrac12 k \tau^2 \le 0\f$).
 void twistFriction(const RigidBody& A, BodyState& a, const RigidBody& B, BodyState& b, const ContactPatch& patch,
-                   const Eigen::Vector3d& n, double limitPerLever) {
+                   const Eigen::Vector3d& n, double tangentLimit) {
   if (patch.points.size() < 2) return;  // a point: no lever about the normal
   double lever = 0;
   for (const Eigen::Vector3d& p : patch.points) {
@@ -47,7 +47,7 @@ void twistFriction(const RigidBody& A, BodyState& a, const RigidBody& B, BodySta
   const Eigen::Vector3d spinB = B.inverseInertiaWorld(b.worldFromBody.rotation) * n;
   const double k = n.dot(spinA) + n.dot(spinB);
   if (!(k > 0)) return;
-  const double limit = limitPerLever * lever;
+  const double limit = tangentLimit * lever;  // mu lambda_n at the mean lever
   const double tau = std::clamp(-n.dot(b.angularVelocity - a.angularVelocity) / k, -limit, limit);
   a.angularVelocity -= tau * spinA;
   b.angularVelocity += tau * spinB;
@@ -55,7 +55,7 @@ void twistFriction(const RigidBody& A, BodyState& a, const RigidBody& B, BodySta
 
 }  // namespace
 
-void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch* patch) {
+void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch& patch) {
   std::vector<WorldBody>& bodies = step.bodies;
   const StepTuning& tuning = step.settings.tuning;
   FrameCounters& c = step.frame.report.counters;
@@ -81,8 +81,8 @@ void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& s
     }
     result = resolveCollision(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, Contact{hit.contact, hit.normal},
                               material, settings);
-    if (contact && patch && result.status != ImpulseStatus::Separating)
-      twistFriction(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, *patch, hit.normal,
+    if (contact && result.status != ImpulseStatus::Separating)
+      twistFriction(bodies[hit.i].rigid, si, bodies[hit.j].rigid, sj, patch, hit.normal,
                     material.friction * std::abs(hit.normal.dot(result.impulse)));
   }
   ++c.collisions;
@@ -214,7 +214,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     step.frame.collidedPairs.emplace_back(struck.i, struck.j);
     Body& bi = inPass(struck.i);
     Body& bj = inPass(struck.j);
-    applyImpulse(step, struck, bi.state, bj.state, links[k].patch ? &*links[k].patch : nullptr);
+    applyImpulse(step, struck, bi.state, bj.state, *links[k].patch);  // (closingSpeed found it)
     bi.changed = bj.changed = true;
     for (int b : {struck.i, struck.j}) {
       if (!instantPass || bodies[b].rigid.isStatic()) continue;

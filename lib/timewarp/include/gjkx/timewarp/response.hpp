@@ -31,8 +31,8 @@ namespace gjkx {
 /// The impulse of one collision at `hit.contact`, applied to the states si and sj at the
 /// time of impact, counted, logged and traced; then Zeno's wedge (a body may be caught).
 /// Under the hybrid, a contact struck inside an interval also takes the Coulomb friction of
-/// its `patch` about the normal, when given (twist friction: response.cpp).
-void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch* patch = nullptr);
+/// its `patch` about the normal (twist friction: response.cpp).
+void applyImpulse(StepContext& step, const Hit& hit, BodyState& si, BodyState& sj, const ContactPatch& patch);
 
 /// A collision at t_c: its impulse, then (with `instantPass`) the impulses it sets off at
 /// the same instant; the bodies struck fly on from t_c to the interval's end. Returns the
