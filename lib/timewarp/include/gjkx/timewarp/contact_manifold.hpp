@@ -46,7 +46,9 @@ struct Manifold {
 /// plane), projected on the plane normal to `normal`, reduced to at most four points that
 /// keep the largest area; each point's separation is B's surface height minus A's there.
 /// `fallback` (the closest points' midpoint) and `distance` give the one point of a pair whose
-/// features do not overlap (round-off). Points are world; anchors are not set.
+/// features do not overlap on the plane (round-off); when the pieces overlap (`distance` 0),
+/// that point's separation is their overlap along `normal`, B's lowest point less A's
+/// highest, never less deep than the overlap. Points are world; anchors are not set.
 std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Pose<double>& poseA,
                                            const Shape<double>& shapeB, const Pose<double>& poseB,
                                            const Eigen::Vector3d& normal, double depth,
