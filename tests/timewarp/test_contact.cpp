@@ -332,8 +332,8 @@ TEST_CASE("hybrid: pieces that overlap read an overlap in their manifold, never 
   // The projection parts a pair by what its manifold reads, so an overlap read as a gap
   // stays. Overlapping pieces' normal is the axis of least overlap, not a closest points'
   // direction, and their touching features can miss each other on its plane: the manifold
-  // then has one point, whose separation once was the distance, 0, and a sphere stayed a
-  // millimetre inside a polytope for four frames of a 250-body pile. Random convex
+  // then has one point, and read at the pieces' distance, 0, it would hold a sphere inside
+  // a polytope (as in a 250-body pile, timewarp_benchmark --bodies 250). Random convex
   // polytopes of ten points (the pile's) against a sphere, a box and another such
   // polytope, moved into each other by a tolerance along the normal of their closest
   // points; the solver's normal (the axis of least overlap, then a face's own normal).

@@ -252,8 +252,8 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
     // Overlapping pieces (distance 0) whose features miss each other on the plane (the normal
     // of an overlap is the axis of least overlap, not a closest points' direction): how far
     // they overlap along the normal, B's lowest point less A's highest (their supports). Never
-    // less deep than the overlap, so the projection parts them; read as 0 they stayed a
-    // millimetre into each other for frames.
+    // less deep than the overlap, so the projection parts them (read as 0, it would only
+    // hold them where they are, inside each other).
     p.separation = distance;
     if (distance <= 0)
       p.separation = std::min(0.0, *std::min_element(B.pointHeight.begin(), B.pointHeight.end()) -
