@@ -426,6 +426,38 @@ TEST_CASE("hybrid: in a pile, a pair the solver holds that closes slower than th
   }
 }
 
+TEST_CASE("the counters of a step's anatomy: cascades within collisions, own steps only under the hybrid, pairs checked again") {
+  // The pile of the test above, both models. What a frame's time goes to at a crash
+  // (frames.csv): the instant pass's impulses after each event's own, the hybrid's own steps of
+  // struck bodies, and the body pairs Timewarp checks again after a collision and at a step's
+  // end. In a box every body has a pair (the box), so each resolved event and each step end
+  // checks at least one pair again.
+  for (const ContactModel model : {ContactModel::Hybrid, ContactModel::Microcollisions}) {
+    Scene scene = fallingIntoABox(24, 2, 2026);
+    scene.run.contact = model;
+    World world(scene, WorldSettings{});
+    FrameCounters sum;
+    while (!world.done()) sum += world.step().counters;
+    const bool hybrid = model == ContactModel::Hybrid;
+    INFO((hybrid ? "hybrid" : "microcollisions") << ": " << sum.collisions << " collisions, " << sum.cascadeImpulses
+                                                  << " of them cascaded, " << sum.rollbacks << " rollbacks, "
+                                                  << sum.stepEnds << " step ends, " << sum.recheckedAfterCollisions
+                                                  << " pairs checked again after collisions, " << sum.recheckedAtStepEnds
+                                                  << " at step ends");
+    CHECK(sum.cascadeImpulses > 0);
+    CHECK(sum.cascadeImpulses < sum.collisions);
+    CHECK(sum.recheckedAfterCollisions >= sum.rollbacks);
+    CHECK(sum.rollbacks > 0);
+    if (hybrid) {
+      CHECK(sum.stepEnds > 0);
+      CHECK(sum.recheckedAtStepEnds >= sum.stepEnds);
+    } else {
+      CHECK(sum.stepEnds == 0);
+      CHECK(sum.recheckedAtStepEnds == 0);
+    }
+  }
+}
+
 TEST_CASE("hybrid: a box spinning at 400 rad/s on the floor, held by the contact solver, flies in quarter turns, and no frame runs again") {
   // A flat box resting on the floor and turning about the vertical at 400 rad/s: 4.2 rad
   // in one of a frame's four intervals at 24 frames a second, more than a path can hold.

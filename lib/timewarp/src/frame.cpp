@@ -36,6 +36,10 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   landings += o.landings;
   staticChecks += o.staticChecks;
   contactImpulses += o.contactImpulses;
+  cascadeImpulses += o.cascadeImpulses;
+  stepEnds += o.stepEnds;
+  recheckedAfterCollisions += o.recheckedAfterCollisions;
+  recheckedAtStepEnds += o.recheckedAtStepEnds;
   sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
@@ -93,6 +97,10 @@ const std::vector<FrameColumn>& frameColumns() {
       {"landings", [](const FrameReport& r) { return double(r.counters.landings); }, true},
       {"static_checks", [](const FrameReport& r) { return double(r.counters.staticChecks); }, true},
       {"contact_impulses", [](const FrameReport& r) { return double(r.counters.contactImpulses); }, true},
+      {"cascade_impulses", [](const FrameReport& r) { return double(r.counters.cascadeImpulses); }, true},
+      {"step_ends", [](const FrameReport& r) { return double(r.counters.stepEnds); }, true},
+      {"rechecked_after_collisions", [](const FrameReport& r) { return double(r.counters.recheckedAfterCollisions); }, true},
+      {"rechecked_at_step_ends", [](const FrameReport& r) { return double(r.counters.recheckedAtStepEnds); }, true},
   };
   return columns;
 }

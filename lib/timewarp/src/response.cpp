@@ -215,6 +215,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     Body& bi = inPass(struck.i);
     Body& bj = inPass(struck.j);
     applyImpulse(step, struck, bi.state, bj.state, *links[k].patch);  // (closingSpeed found it)
+    if (k != 0) ++step.frame.report.counters.cascadeImpulses;
     bi.changed = bj.changed = true;
     for (int b : {struck.i, struck.j}) {
       if (!instantPass || bodies[b].rigid.isStatic()) continue;

@@ -87,10 +87,13 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
       stepEnds.pop();
       if (end.version != bodies[end.body].version) continue;  // flown again since
       if (!flyOwnStep(step, end.body, end.time, T1)) return;
+      ++c.stepEnds;
       stepEndOf(end.body);
       Hit next;
-      for (const auto& [i, j] : pairsOf({end.body}, end.time))
+      for (const auto& [i, j] : pairsOf({end.body}, end.time)) {
+        ++c.recheckedAtStepEnds;
         if (check(i, j, end.time, next)) queue.push(next);
+      }
       continue;
     }
     Hit hit;
@@ -117,8 +120,10 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
     for (int b : struck) stepEndOf(b);
     // ... and re-checks only the pairs that touch the bodies it struck, from t_c on.
     Hit next;
-    for (const auto& [i, j] : pairsOf(struck, hit.time))
+    for (const auto& [i, j] : pairsOf(struck, hit.time)) {
+      ++c.recheckedAfterCollisions;
       if (check(i, j, hit.time, next)) queue.push(next);
+    }
   }
 }
 

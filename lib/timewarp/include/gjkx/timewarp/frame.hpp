@@ -46,6 +46,10 @@ struct FrameCounters {
   long landings = 0;            ///< hybrid: pairs that met slowly inside an interval, left to the next one's contact solve (narrow_phase.hpp)
   long staticChecks = 0;        ///< of collisionChecks, the time-of-impact queries of a piece against a static body's piece
   long contactImpulses = 0;     ///< hybrid: of collisions, impulses on a contact pair closing slower than the contact speed (no restitution; response.hpp)
+  long cascadeImpulses = 0;     ///< of collisions, the instant pass's impulses after an event's own (on contacts its impulses set closing; response.hpp)
+  long stepEnds = 0;            ///< Timewarp under the hybrid: own steps that ended before the interval's end (the body flies on; timewarp.hpp)
+  long recheckedAfterCollisions = 0;  ///< Timewarp: body pairs checked again from t_c because a collision's impulses struck one of their bodies
+  long recheckedAtStepEnds = 0;       ///< Timewarp: body pairs checked again at their bodies' step ends
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 
