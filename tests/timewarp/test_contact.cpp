@@ -443,11 +443,16 @@ TEST_CASE("the counters of a step's anatomy: cascades within collisions, own ste
                                                   << " of them cascaded, " << sum.rollbacks << " rollbacks, "
                                                   << sum.stepEnds << " step ends, " << sum.recheckedAfterCollisions
                                                   << " pairs checked again after collisions, " << sum.recheckedAtStepEnds
-                                                  << " at step ends");
+                                                  << " at step ends, " << sum.checkedAtIntervalStarts << " at the starts of "
+                                                  << sum.intervals << " intervals");
     CHECK(sum.cascadeImpulses > 0);
     CHECK(sum.cascadeImpulses < sum.collisions);
     CHECK(sum.recheckedAfterCollisions >= sum.rollbacks);
     CHECK(sum.rollbacks > 0);
+    // Two seconds at 24 frames a second, one interval a frame at least (four under the hybrid),
+    // each checking the broad phase's candidates at its start.
+    CHECK(sum.intervals >= (hybrid ? 4 : 1) * 48);
+    CHECK(sum.checkedAtIntervalStarts > 0);
     if (hybrid) {
       CHECK(sum.stepEnds > 0);
       CHECK(sum.recheckedAtStepEnds >= sum.stepEnds);

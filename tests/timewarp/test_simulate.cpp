@@ -76,7 +76,8 @@ TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[s
         "events,microcollisions,bodies_rolled_back,brent_max,complete_tests,solver_caps,tunnelled,integration_s,"
         "bounds_s,collision_detection_s,impulses_s,ordering_s,checks_s,brent_queries,caught,spin_restarts,event_caps,projections,"
         "contact_points,contact_groups,contact_sweeps,energy_rises,sleeping,contacts_s,cpu_s,landings,static_checks,contact_impulses,"
-        "cascade_impulses,step_ends,rechecked_after_collisions,rechecked_at_step_ends");
+        "cascade_impulses,step_ends,rechecked_after_collisions,rechecked_at_step_ends,"
+        "checked_at_interval_starts,intervals");
   CHECK(firstLine(out / "bodies.csv") == "frame,time,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy");
   const auto keys = summary(r.output);
   for (const char* key : {"frames", "sim_s", "wall_s", "collisions", "rollbacks", "brent_mean", "brent_max",

@@ -40,6 +40,8 @@ FrameCounters& FrameCounters::operator+=(const FrameCounters& o) {
   stepEnds += o.stepEnds;
   recheckedAfterCollisions += o.recheckedAfterCollisions;
   recheckedAtStepEnds += o.recheckedAtStepEnds;
+  checkedAtIntervalStarts += o.checkedAtIntervalStarts;
+  intervals += o.intervals;
   sleeping = o.sleeping;  // a state at the frame's end: the later one
   maxPenetration = std::max(maxPenetration, o.maxPenetration);
   tunnelled += o.tunnelled;
@@ -101,6 +103,8 @@ const std::vector<FrameColumn>& frameColumns() {
       {"step_ends", [](const FrameReport& r) { return double(r.counters.stepEnds); }, true},
       {"rechecked_after_collisions", [](const FrameReport& r) { return double(r.counters.recheckedAfterCollisions); }, true},
       {"rechecked_at_step_ends", [](const FrameReport& r) { return double(r.counters.recheckedAtStepEnds); }, true},
+      {"checked_at_interval_starts", [](const FrameReport& r) { return double(r.counters.checkedAtIntervalStarts); }, true},
+      {"intervals", [](const FrameReport& r) { return double(r.counters.intervals); }, true},
   };
   return columns;
 }

@@ -50,8 +50,10 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
   std::priority_queue<Hit, std::vector<Hit>, std::greater<Hit>> queue;
   {
     Hit hit;
-    for (const auto& [i, j] : candidatePairs(step, T0, T1))
+    for (const auto& [i, j] : candidatePairs(step, T0, T1)) {
+      ++frame.report.counters.checkedAtIntervalStarts;
       if (check(i, j, T0, hit)) queue.push(hit);
+    }
   }
   // The swept bounds stay valid for every body a collision leaves alone: only the bodies
   // its impulses struck (its two, and those the instant pass reached) get new ones (from

@@ -189,6 +189,7 @@ FrameReport World::step() {
     throw;
   }
   frame.report.counters.spinRestarts = spinRestarts;
+  frame.report.counters.intervals = intervals;
   // The frame is final: the global virtual time has passed T1, its history is discarded.
   if (step.hybrid()) sleepGroups(step, T1);
   else settle(step, T1);

@@ -50,6 +50,8 @@ struct FrameCounters {
   long stepEnds = 0;            ///< Timewarp under the hybrid: own steps that ended before the interval's end (the body flies on; timewarp.hpp)
   long recheckedAfterCollisions = 0;  ///< Timewarp: body pairs checked again from t_c because a collision's impulses struck one of their bodies
   long recheckedAtStepEnds = 0;       ///< Timewarp: body pairs checked again at their bodies' step ends
+  long checkedAtIntervalStarts = 0;   ///< Timewarp: body pairs checked at the starts of the frame's intervals (the broad phase's candidates)
+  long intervals = 0;           ///< intervals the frame was run in (after any spin restart; world.cpp)
   double maxPenetration = 0;    ///< the deepest penetration at the frame's end (independent check)
   long tunnelled = 0;           ///< pairs that interpenetrated during the frame with no collision reported (verify)
 
