@@ -207,6 +207,16 @@ struct RunStats {
   double energyRises = -1;      ///< group solves whose kinetic energy rose: total
   double sleepingEnd = -1;      ///< bodies asleep at the last frame's end
   double sleepingMax = -1;      ///< the most asleep at a frame's end
+  /// Where the slowest frame's work went (docs 07's columns; -1: not recorded, an older
+  /// frames.csv): its intervals; the body pairs Timewarp checked at the intervals' starts,
+  /// again after collisions and at own steps' ends; its impulses and, of them, the instant
+  /// passes' cascaded ones.
+  double slowestIntervals = -1;
+  double slowestAtStarts = -1;         ///< checked_at_interval_starts
+  double slowestAfterCollisions = -1;  ///< rechecked_after_collisions
+  double slowestAtStepEnds = -1;       ///< rechecked_at_step_ends
+  double slowestImpulses = -1;         ///< collisions
+  double slowestCascaded = -1;         ///< cascade_impulses
 };
 
 /// The statistics of `run` (definitions at each field of RunStats).
@@ -268,6 +278,16 @@ inline RunStats statsOf(const Run& run) {
   s.energyRises = total("energy_rises", false);
   s.sleepingEnd = run.has("sleeping") ? run.at("sleeping").back() : -1.0;
   s.sleepingMax = most("sleeping");
+  std::size_t slowest = 0;
+  for (std::size_t k = 1; k < s.frames; ++k)
+    if (run.ratio(k) > run.ratio(slowest)) slowest = k;
+  const auto atSlowest = [&](const char* name) { return run.has(name) ? run.at(name)[slowest] : -1.0; };
+  s.slowestIntervals = atSlowest("intervals");
+  s.slowestAtStarts = atSlowest("checked_at_interval_starts");
+  s.slowestAfterCollisions = atSlowest("rechecked_after_collisions");
+  s.slowestAtStepEnds = atSlowest("rechecked_at_step_ends");
+  s.slowestImpulses = atSlowest("collisions");
+  s.slowestCascaded = atSlowest("cascade_impulses");
   s.completeTests = work("complete_tests");
   s.sdEvaluations = work("sd_evaluations");
   s.kdopNodes = work("kdop_nodes");
@@ -367,6 +387,14 @@ inline std::string statsTable(const std::vector<std::pair<std::string, Run>>& ru
       [&](const RunStats& s) {
         return s.sleepingEnd < 0 ? std::string("not recorded")
                                  : format("%.0f", s.sleepingEnd) + format(" (%.0f)", s.sleepingMax);
+      },
+      none);
+  row("slowest frame: intervals; body pairs checked at their starts, after collisions, at step ends; impulses (cascaded)",
+      [&](const RunStats& s) {
+        if (s.slowestIntervals < 0) return std::string("not recorded");
+        return format("%.0f; ", s.slowestIntervals) + format("%.0f, ", s.slowestAtStarts) +
+               format("%.0f, ", s.slowestAfterCollisions) + format("%.0f; ", s.slowestAtStepEnds) +
+               format("%.0f", s.slowestImpulses) + format(" (%.0f)", s.slowestCascaded);
       },
       none);
   md << "\nRuns:\n\n";

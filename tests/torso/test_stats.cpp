@@ -88,6 +88,9 @@ std::string tableOf(const fs::path& run, const std::string& label) {
   return test::readText(table);
 }
 
+const std::string kSlowestRow =
+    "slowest frame: intervals; body pairs checked at their starts, after collisions, at step ends; impulses (cascaded)";
+
 }  // namespace
 
 TEST_CASE("08_torso --stats works out the paper's statistics from a run's frames.csv", "[torso][stats]") {
@@ -112,6 +115,25 @@ TEST_CASE("08_torso --stats works out the paper's statistics from a run's frames
   // A frames.csv without the hybrid contact model's columns: its rows say so.
   CHECK(row(md, "contact points solved per frame: mean (most)") == std::vector<std::string>{"not recorded", "future work (§6)"});
   CHECK(row(md, "bodies asleep at the end (most at a frame's end)").at(0) == "not recorded");
+  CHECK(row(md, kSlowestRow) == std::vector<std::string>{"not recorded", "not reported"});
+  fs::remove_all(run);
+}
+
+TEST_CASE("08_torso --stats says where the slowest frame's work went", "[torso][stats]") {
+  // The same frames with the anatomy's columns at the end; frame 3 is the slowest (ratio 4):
+  // its 4 intervals, 40 pairs checked at their starts, 7 after collisions, 3 at step ends, and
+  // its 1 impulse, none cascaded. The other frames' values differ, so a wrong frame shows.
+  std::string csv = std::string(header);
+  csv.insert(csv.size() - 1, ",cascade_impulses,step_ends,rechecked_after_collisions,rechecked_at_step_ends,"
+                             "checked_at_interval_starts,intervals");
+  const char* extra[] = {",1,9,20,9,10,1", ",2,8,30,8,20,2", ",0,2,7,3,40,4", ",0,1,1,1,5,1"};
+  std::stringstream lines(rows);
+  int k = 0;
+  for (std::string line; std::getline(lines, line); ++k) csv += line + extra[k] + "\n";
+  const fs::path run = runFolder("anatomy", csv);
+  const std::string md = tableOf(run, "anatomy");
+  INFO(md);
+  CHECK(row(md, kSlowestRow) == std::vector<std::string>{"4; 40, 7, 3; 1 (0)", "not reported"});
   fs::remove_all(run);
 }
 
