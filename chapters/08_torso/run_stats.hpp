@@ -226,11 +226,12 @@ inline RunStats statsOf(const Run& run) {
   s.simulated = run.at("time").back();
   std::vector<double> ratios;
   double wall = 0, checks = 0;
+  std::size_t slowest = 0;  // the frame of ratioMax
   for (std::size_t k = 0; k < s.frames; ++k) {
     const double r = run.ratio(k), t = run.at("time")[k];
     ratios.push_back(r);
     if (k == 0 || r < s.ratioMin) s.ratioMin = r;
-    if (k == 0 || r > s.ratioMax) s.ratioMax = r, s.ratioMaxTime = t;
+    if (k == 0 || r > s.ratioMax) s.ratioMax = r, s.ratioMaxTime = t, slowest = k;
     const long collisions = long(run.at("collisions")[k]);
     if (k == 0 || collisions > s.peakCollisions) s.peakCollisions = collisions, s.ratioPeak = r, s.peakTime = t;
     wall += run.at("wall_s")[k];
@@ -278,9 +279,6 @@ inline RunStats statsOf(const Run& run) {
   s.energyRises = total("energy_rises", false);
   s.sleepingEnd = run.has("sleeping") ? run.at("sleeping").back() : -1.0;
   s.sleepingMax = most("sleeping");
-  std::size_t slowest = 0;
-  for (std::size_t k = 1; k < s.frames; ++k)
-    if (run.ratio(k) > run.ratio(slowest)) slowest = k;
   const auto atSlowest = [&](const char* name) { return run.has(name) ? run.at(name)[slowest] : -1.0; };
   s.slowestIntervals = atSlowest("intervals");
   s.slowestAtStarts = atSlowest("checked_at_interval_starts");

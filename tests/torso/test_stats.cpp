@@ -88,6 +88,17 @@ std::string tableOf(const fs::path& run, const std::string& label) {
   return test::readText(table);
 }
 
+// The hand-made frames with `columns` added at the end of the header, and `cells[k]` (each
+// starting with a comma) at the end of row k.
+std::string withColumns(const std::string& columns, const std::vector<std::string>& cells) {
+  std::string csv = std::string(header);
+  csv.insert(csv.size() - 1, columns);
+  std::stringstream lines(rows);
+  std::size_t k = 0;
+  for (std::string line; std::getline(lines, line); ++k) csv += line + cells.at(k) + "\n";
+  return csv;
+}
+
 const std::string kSlowestRow =
     "slowest frame: intervals; body pairs checked at their starts, after collisions, at step ends; impulses (cascaded)";
 
@@ -123,14 +134,10 @@ TEST_CASE("08_torso --stats says where the slowest frame's work went", "[torso][
   // The same frames with the anatomy's columns at the end; frame 3 is the slowest (ratio 4):
   // its 4 intervals, 40 pairs checked at their starts, 7 after collisions, 3 at step ends, and
   // its 1 impulse, none cascaded. The other frames' values differ, so a wrong frame shows.
-  std::string csv = std::string(header);
-  csv.insert(csv.size() - 1, ",cascade_impulses,step_ends,rechecked_after_collisions,rechecked_at_step_ends,"
-                             "checked_at_interval_starts,intervals");
-  const char* extra[] = {",1,9,20,9,10,1", ",2,8,30,8,20,2", ",0,2,7,3,40,4", ",0,1,1,1,5,1"};
-  std::stringstream lines(rows);
-  int k = 0;
-  for (std::string line; std::getline(lines, line); ++k) csv += line + extra[k] + "\n";
-  const fs::path run = runFolder("anatomy", csv);
+  const fs::path run = runFolder("anatomy", withColumns(",cascade_impulses,step_ends,rechecked_after_collisions,"
+                                                       "rechecked_at_step_ends,checked_at_interval_starts,intervals",
+                                                       {",1,9,20,9,10,1", ",2,8,30,8,20,2", ",0,2,7,3,40,4",
+                                                        ",0,1,1,1,5,1"}));
   const std::string md = tableOf(run, "anatomy");
   INFO(md);
   CHECK(row(md, kSlowestRow) == std::vector<std::string>{"4; 40, 7, 3; 1 (0)", "not reported"});
@@ -143,13 +150,9 @@ TEST_CASE("08_torso --stats adds the contact solver to the method's time and tab
   // frame 1 (its ratio 2 instead of 1: min 0.5, median (2 + 2) / 2 = 2, max 4), 8 + 4 + 0 + 0
   // contact points (mean 3, most 8) in 2 + 1 + 0 + 0 groups (mean 0.75), 6 + 2 sweeps (mean 2),
   // no energy rise, 0, 1, 3 and 2 bodies asleep (2 at the end, 3 at most).
-  std::string csv = std::string(header);
-  csv.insert(csv.size() - 1, ",contact_points,contact_groups,contact_sweeps,energy_rises,sleeping,contacts_s");
-  const char* extra[] = {",8,2,6,0,0,0.25", ",4,1,2,0,1,0", ",0,0,0,0,3,0", ",0,0,0,0,2,0"};
-  std::stringstream lines(rows);
-  int k = 0;
-  for (std::string line; std::getline(lines, line); ++k) csv += line + extra[k] + "\n";
-  const fs::path run = runFolder("hybrid", csv);
+  const fs::path run =
+      runFolder("hybrid", withColumns(",contact_points,contact_groups,contact_sweeps,energy_rises,sleeping,contacts_s",
+                                      {",8,2,6,0,0,0.25", ",4,1,2,0,1,0", ",0,0,0,0,3,0", ",0,0,0,0,2,0"}));
   const std::string md = tableOf(run, "hybrid");
   INFO(md);
   CHECK(row(md, "execution / simulation time: median").at(0) == "2");

@@ -47,11 +47,12 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
     const double t1 = std::min(pathEnd(step, i, T1), pathEnd(step, j, T1));
     return t1 > t0 && narrow.checkPair(step, i, j, t0, t1, hit);
   };
+  FrameCounters& c = frame.report.counters;
   std::priority_queue<Hit, std::vector<Hit>, std::greater<Hit>> queue;
   {
     Hit hit;
     for (const auto& [i, j] : candidatePairs(step, T0, T1)) {
-      ++frame.report.counters.checkedAtIntervalStarts;
+      ++c.checkedAtIntervalStarts;
       if (check(i, j, T0, hit)) queue.push(hit);
     }
   }
@@ -79,7 +80,6 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     return pairs;
   };
-  FrameCounters& c = frame.report.counters;
   const long cap = eventCapOf(step);
   while (!queue.empty() || !stepEnds.empty()) {
     // A step end before the earliest collision: the body flies on from it, and its pairs are
