@@ -180,22 +180,25 @@ bool contactFromGjk(StepContext& step, const GjkResult<double>& g, int i, int pi
 
 bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj,
                Hit& hit) {
+  // In contact: within the tolerance (§2.3), or under the hybrid within its contact band,
+  // where its solver takes pieces as in contact (contact_solver.hpp, response.hpp).
+  const double band = step.hybrid() ? step.band(step.settings.tuning.contactBand) : step.scene.collisionTolerance;
   GjkResult<double> g;
   {
     PartTimer timer(step.frame.report.parts.collisionDetection);
     GjkCache<double>* cache =
         step.warmStarts() ? &step.frame.contactCoherence[step.piecePairKey(i, pi, j, pj)] : nullptr;
-    // Only "within the tolerance or not" is asked of a pair that is apart (§2.3's boolean
+    // Only "within the band or not" is asked of a pair that is apart (§2.3's boolean
     // query): most pairs the instant pass looks at touched earlier in the frame and have
     // parted since, and the direction that last separated them, warm from the cache, says
-    // so with two supports (the run then ends with a distance above the tolerance, an upper
+    // so with two supports (the run then ends with a distance above the band, an upper
     // bound, and the pair is not in contact).
     GjkSettings<double> settings;
-    settings.separationThreshold = step.scene.collisionTolerance;
+    settings.separationThreshold = band;
     g = gjk(Placed<ShapeRef<double>>{step.bodies[i].pieces[pi], si.worldFromBody},
             Placed<ShapeRef<double>>{step.bodies[j].pieces[pj], sj.worldFromBody}, settings, cache);
   }
-  if (g.status != GjkStatus::Overlapping && g.distance > step.scene.collisionTolerance) return false;
+  if (g.status != GjkStatus::Overlapping && g.distance > band) return false;
   contactFromGjk(step, g, i, pi, j, pj, t, si, sj, hit);
   return true;
 }

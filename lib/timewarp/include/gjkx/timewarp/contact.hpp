@@ -78,7 +78,9 @@ bool contactFromGjk(StepContext& step, const GjkResult<double>& g, int i, int pi
                     const BodyState& si, const BodyState& sj, Hit& hit);
 
 /// The contact of pieces pi of body i and pj of body j at time t by a double GJK: true,
-/// with the contact data in `hit` (contactFromGjk), if they are within the tolerance.
+/// with the contact data in `hit` (contactFromGjk), if they are within the tolerance, or
+/// under the hybrid within StepTuning::contactBand tolerances (the band in which its solver
+/// takes pieces as in contact: the instant pass reaches every contact the solver holds).
 bool contactAt(StepContext& step, int i, int pi, int j, int pj, double t, const BodyState& si, const BodyState& sj,
                Hit& hit);
 

@@ -19,6 +19,12 @@
 ///   of every pair of its two bodies over the rest of the frame; the pass applies them at
 ///   the same instant, one GJK per contact of the struck bodies (the piece pairs that came
 ///   within the tolerance this frame), and each struck body is checked once, after the last link.
+///   Under the hybrid a contact is what its solver holds: pieces within StepTuning::contactBand
+///   tolerances, not one. A light body pinned between two others, a band's width from each
+///   (a rib between the plant and a vertebra at the torso's crash), is then struck on both
+///   sides at one instant, where with the tolerance alone it rattled between them, each
+///   bounce an event of its own with every pair of the rib checked again. The price: an
+///   impulse on a link up to a band apart acts at most one tolerance of closing early.
 #pragma once
 
 #include <gjkx/timewarp/contact.hpp>
