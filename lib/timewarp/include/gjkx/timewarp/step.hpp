@@ -72,7 +72,8 @@ struct FrameState {
     std::vector<int> by;                  ///< the bodies that struck it (each once)
   };
   std::vector<Struck> struck;  ///< per body
-  /// Two bodies' pieces that came within the tolerance this frame (response.hpp's instant pass).
+  /// Two bodies' pieces that came within the tolerance this frame, or that the hybrid's
+  /// contact solver held (response.hpp's instant pass).
   struct Touching {
     int i;   ///< the first body
     int pi;  ///< its piece
