@@ -14,7 +14,8 @@
 // which is also written to DIR/summary.txt, followed by a line saying how the run was made
 // (RUN scene=... bodies=N scalar=... solver=... variant=... ordering=... tolerance=... frame_rate=...
 // checks=on|off ... impulse_tolerance=... sticking_tolerance=...), so that a kept run says
-// what it is, and by a WORK line of counts that do not depend on the machine's load.
+// what it is, and by a WORK line of counts that do not depend on the machine's load (and the
+// process's peak resident memory, at its end).
 //
 // With --checks, the independent checks (gjkx/verify) measure every frame: the SUMMARY's
 // max_penetration and tunnelled, and each finding (a pair deeper than one tolerance, or a
@@ -29,6 +30,7 @@
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -39,6 +41,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+namespace {
+
+/// The process's peak resident memory so far, in megabytes (getrusage's ru_maxrss, which
+/// Linux gives in kilobytes): the scene's meshes, their hierarchies and the run together.
+double peakMemoryMb() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return -1;
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Runs a gjkx scene file: bodies in free flight, collisions found by the paper's solver and "
@@ -250,6 +264,7 @@ int main(int argc, char** argv) {
   summary << "WORK complete_tests=" << total.completeTests << " sd_evaluations=" << total.sdEvaluations
           << " piece_pairs=" << total.piecePairs << " kdop_nodes=" << total.kdopNodes << " settled=" << total.settled
           << " impulse_steps=" << total.impulseSteps << " impulse_caps=" << total.impulseCaps
-          << " spin_restarts=" << total.spinRestarts << " event_caps=" << total.eventCaps << "\n";
+          << " spin_restarts=" << total.spinRestarts << " event_caps=" << total.eventCaps
+          << " peak_memory_mb=" << peakMemoryMb() << "\n";
   return 0;
 }

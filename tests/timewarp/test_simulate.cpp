@@ -44,12 +44,14 @@ long lineCount(const fs::path& file) {
   return n;
 }
 
-// The key=value pairs of the SUMMARY line of `output` (empty if there is none).
-std::map<std::string, std::string> summary(const std::string& output) {
+// The key=value pairs of the line of `output` that starts with `tag` and a space (the
+// SUMMARY line by default; empty if there is none).
+std::map<std::string, std::string> summary(const std::string& output, const std::string& tag = "SUMMARY") {
   std::map<std::string, std::string> keys;
-  const auto at = output.find("SUMMARY ");
+  const std::string start = tag + " ";
+  const auto at = output.find(start);
   if (at == std::string::npos) return keys;
-  std::stringstream line(output.substr(at + 8, output.find('\n', at) - at - 8));
+  std::stringstream line(output.substr(at + start.size(), output.find('\n', at) - at - start.size()));
   for (std::string item; line >> item;) {
     const auto eq = item.find('=');
     if (eq != std::string::npos) keys[item.substr(0, eq)] = item.substr(eq + 1);
@@ -94,6 +96,16 @@ TEST_CASE("gjkx_simulate runs the cradle and writes the documented outputs", "[s
   if (keys.count("tunnelled")) CHECK(keys.at("tunnelled") == "0");
   // The momentum runs down the row of five: four collisions, each found late and rolled back.
   if (keys.count("collisions")) CHECK(std::stol(keys.at("collisions")) == 4);
+  // summary.txt's WORK line ends with the process's peak resident memory: at least the few
+  // megabytes any process takes, far below what five balls could need.
+  std::ifstream file(out / "summary.txt");
+  std::string text;
+  for (std::string line; std::getline(file, line);) text += line + "\n";
+  const auto work = summary(text, "WORK");
+  REQUIRE(work.count("peak_memory_mb") == 1);
+  CHECK(text.find(" peak_memory_mb=") > text.find(" event_caps="));  // the last key, added at the end
+  CHECK(std::stod(work.at("peak_memory_mb")) > 1.0);
+  CHECK(std::stod(work.at("peak_memory_mb")) < 4096.0);
   fs::remove_all(out);
 }
 
