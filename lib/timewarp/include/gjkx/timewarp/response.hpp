@@ -22,7 +22,7 @@
 ///   Under the hybrid a contact is what its solver holds: pieces within StepTuning::contactBand
 ///   tolerances, not one. A light body pinned between two others, a band's width from each
 ///   (a rib between the plant and a vertebra at the torso's crash), is then struck on both
-///   sides at one instant, where with the tolerance alone it rattled between them, each
+///   sides at one instant, where with the tolerance alone it would rattle between them, each
 ///   bounce an event of its own with every pair of the rib checked again. The price: an
 ///   impulse on a link up to a band apart acts at most one tolerance of closing early.
 #pragma once
