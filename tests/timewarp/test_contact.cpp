@@ -385,6 +385,56 @@ TEST_CASE("hybrid: pieces that overlap read an overlap in their manifold, never 
   CHECK(missed > 0);  // the case this test is for occurs
 }
 
+TEST_CASE("hybrid: pieces that overlap read an overlap in a manifold as deep as the solver's") {
+  // The solver's features reach as deep as a pair can close over the interval (the band and
+  // the pair's motion: up to twenty tolerances in the torso's crash). So deep, the feature of
+  // a curved piece spans several of its faces, and the plane of its hull (a chord) lies off
+  // its surface by up to that depth: overlapping pieces could read a gap of ten tolerances,
+  // and the projection would leave them inside each other. Flat random polytopes of ten to
+  // forty points (a bone's pieces), moved into each other by 0.1 to 3 tolerances along the
+  // normal of their closest points, their features 2 to 20 tolerances deep.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+  const auto polytope = [&](int points) {
+    std::vector<Eigen::Vector3d> cloud;
+    for (int k = 0; k < points; ++k)
+      cloud.push_back(0.05 * Eigen::Vector3d(unit(random), 0.5 * unit(random), 0.3 * unit(random)));
+    return Shape<double>(Polytope<double>::hull(cloud));
+  };
+  const auto pose = [&](const Eigen::Vector3d& at) {
+    Pose<double> p;
+    p.rotation = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
+                     .toRotationMatrix();
+    p.translation = at;
+    return p;
+  };
+  int overlaps = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Shape<double> a = polytope(10 + trial % 30), b = polytope(10 + (trial / 7) % 30);
+    const Pose<double> poseA = pose(Eigen::Vector3d::Zero());
+    Pose<double> poseB = pose(0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized());
+    const auto closest = [&] {
+      return gjk(Placed<ShapeRef<double>>{a, poseA}, Placed<ShapeRef<double>>{b, poseB}, GjkSettings<double>{}, nullptr);
+    };
+    const GjkResult<double> far = closest();
+    REQUIRE(far.status == GjkStatus::Separated);
+    const Eigen::Vector3d n = far.z / far.distance;  // from A to B
+    poseB.translation -= (far.distance + (0.1 + 2.9 * fraction(random)) * tol) * n;
+    const double depth = (2 + 18 * fraction(random)) * tol;
+    if (closest().status != GjkStatus::Overlapping) continue;  // (past a sharp corner: a hair apart)
+    const Eigen::Vector3d normal = faceNormal(a, poseA, b, poseB, leastOverlapAxis(a, poseA, b, poseB, {n}), depth);
+    const auto points = contactManifold(a, poseA, b, poseB, normal, depth, Eigen::Vector3d::Zero(), 0.0, tol);
+    REQUIRE(!points.empty());
+    double nearest = 1e300;
+    for (const ManifoldPoint& p : points) nearest = std::min(nearest, p.separation);
+    INFO("trial " << trial << ": " << points.size() << " points, features " << depth / tol
+                  << " tolerances deep, the nearest at " << nearest / tol << " tolerances");
+    CHECK(nearest < 0);
+    ++overlaps;
+  }
+  CHECK(overlaps >= 1500);
+}
+
 TEST_CASE("hybrid: in a pile, a pair the solver holds that closes slower than the contact speed is struck with no bounce") {
   // Twenty-four bodies of four kinds falling into a box (timewarp_benchmark's pile): as they
   // come to rest, bodies turning on a body the contact solver holds close on it inside an

@@ -245,21 +245,32 @@ std::vector<ManifoldPoint> contactManifold(const Shape<double>& shapeA, const Po
       add(A.hull[a0] + s * d, A.height[a0] + s * (A.height[a1] - A.height[a0]),
           B.height[b0] + r * (B.height[b1] - B.height[b0]));
     }
+  // How far overlapping pieces (distance 0) overlap along the normal: B's lowest point less
+  // A's highest (their supports). Never less deep than the overlap, so the projection parts
+  // them (read as 0 or as a gap, it would hold them where they are, inside each other).
+  const auto overlapAlongNormal = [&] {
+    return std::min(0.0, *std::min_element(B.pointHeight.begin(), B.pointHeight.end()) -
+                             *std::max_element(A.pointHeight.begin(), A.pointHeight.end()));
+  };
   std::vector<ManifoldPoint> out;
   if (found.empty()) {  // features that do not overlap by round-off: the closest points
     ManifoldPoint p;
     p.point = fallback;
-    // Overlapping pieces (distance 0) whose features miss each other on the plane (the normal
-    // of an overlap is the axis of least overlap, not a closest points' direction): how far
-    // they overlap along the normal, B's lowest point less A's highest (their supports). Never
-    // less deep than the overlap, so the projection parts them (read as 0, it would only
-    // hold them where they are, inside each other).
-    p.separation = distance;
-    if (distance <= 0)
-      p.separation = std::min(0.0, *std::min_element(B.pointHeight.begin(), B.pointHeight.end()) -
-                                       *std::max_element(A.pointHeight.begin(), A.pointHeight.end()));
+    // Overlapping pieces whose features miss each other on the plane (the normal of an
+    // overlap is the axis of least overlap, not a closest points' direction): the overlap.
+    p.separation = distance <= 0 ? overlapAlongNormal() : distance;
     out.push_back(p);
     return out;
+  }
+  // Overlapping pieces whose features overlap on the plane but read a gap there: a feature
+  // as deep as the solver's (the band and the pair's motion over the interval, several
+  // tolerances) spans several faces of a curved piece, and its hull's plane, a chord, lies
+  // off the surface by up to that depth. An overlap is never read as a gap: the nearest
+  // point takes the overlap along the normal.
+  if (distance <= 0) {
+    const auto nearest = std::min_element(found.begin(), found.end(),
+                                          [](const auto& a, const auto& b) { return a.second < b.second; });
+    if (nearest->second >= 0) nearest->second = overlapAlongNormal();
   }
   // The points that touch (within two tolerances of the deepest) first, reduced to four;
   // places left go to the deepest of the rest (a curved piece's points farther up).
