@@ -19,6 +19,16 @@
 // how much the load moved that frame:
 //
 //   RATIO LABEL_slowest_frame_spread=<that frame's largest time over the runs / its least>
+//
+// And what the slowest frame did: its events (collisions, step ends and stale hits taken
+// from the ordering, frames.csv's `events`), what each cost on average, and what each may
+// cost for the frame to run in real time (its length over its events); with the body pairs
+// checked again per event (after collisions and at step ends) and the time-of-impact
+// queries per event:
+//
+//   SLOWEST LABEL frame=K events=E cost_per_event_us=... real_time_per_event_us=...
+//           pairs_per_event=... queries_per_event=...
+//
 // When two runs are given, one more line compares their slowest frames:
 //
 //   RATIO SECOND_vs_FIRST_slowest_frame=<second's slowest / first's slowest>
@@ -129,6 +139,21 @@ int main(int argc, char** argv) {
     std::printf("RATIO %s_median_frame_vs_real_time=%.4g\n", label.c_str(), median);
     std::printf("RATIO %s_total_vs_real_time=%.4g\n", label.c_str(), total / time.back());
     if (repeats > 1) std::printf("RATIO %s_slowest_frame_spread=%.4g\n", label.c_str(), spread[worst]);
+    // The slowest frame's events: each must cost no more than the frame's length over their
+    // number for the frame to run in real time.
+    try {
+      const double events = frames.at("events")[worst];
+      const double perEvent = events > 0 ? 1.0 / events : 0.0;
+      const double pairs = frames.at("rechecked_after_collisions")[worst] + frames.at("rechecked_at_step_ends")[worst];
+      std::printf("SLOWEST %s frame=%zu events=%.0f cost_per_event_us=%.4g real_time_per_event_us=%.4g "
+                  "pairs_per_event=%.4g queries_per_event=%.4g\n",
+                  label.c_str(), worst + 1, events, 1e6 * ratio[worst] * frames.frameLength(worst) * perEvent,
+                  1e6 * frames.frameLength(worst) * perEvent, pairs * perEvent,
+                  frames.at("collision_checks")[worst] * perEvent);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "gjkx_frame_ratios: %s\n", e.what());
+      return 1;
+    }
     slowest.emplace_back(label, ratio[worst]);
   }
   if (slowest.size() == 2)

@@ -311,10 +311,14 @@ TEST_CASE("gjkx_frame_ratios takes each frame's least time over repeated runs, a
   const std::size_t cpu = column("cpu_s"), time = column("time");
   REQUIRE(cpu < a[0].size());
   double slowest = 0, single = 0;
+  std::size_t singleAt = 1;  // the row of run a's slowest frame
   for (std::size_t k = 1; k < a.size(); ++k) {
     const double length = std::stod(a[k][time]) - (k > 1 ? std::stod(a[k - 1][time]) : 0.0);
     slowest = std::max(slowest, std::min(std::stod(a[k][cpu]), std::stod(b[k][cpu])) / length);
-    single = std::max(single, std::stod(a[k][cpu]) / length);
+    if (std::stod(a[k][cpu]) / length > single) {
+      single = std::stod(a[k][cpu]) / length;
+      singleAt = k;
+    }
   }
   const auto ratio = [](const std::string& output, const std::string& key) {
     const auto at = output.find("RATIO " + key + "=");
@@ -333,6 +337,25 @@ TEST_CASE("gjkx_frame_ratios takes each frame's least time over repeated runs, a
   CHECK(one.output.find("runs=") == std::string::npos);
   CHECK(one.output.find("spread") == std::string::npos);
   CHECK(ratio(one.output, "one_slowest_frame_vs_real_time") == Approx(single).epsilon(1e-3));
+  // The slowest frame's events: its number, and each event's cost against real time's.
+  {
+    INFO(one.output);
+    const auto line = one.output.find("SLOWEST one frame=" + std::to_string(singleAt) + " ");
+    REQUIRE(line != std::string::npos);
+    const std::string slowestLine = one.output.substr(line, one.output.find('\n', line) - line);
+    const auto value = [&](const std::string& key) {
+      const auto at = slowestLine.find(" " + key + "=");
+      REQUIRE(at != std::string::npos);
+      return std::stod(slowestLine.substr(at + key.size() + 2));
+    };
+    const double events = std::stod(a[singleAt][column("events")]);
+    const double length = std::stod(a[singleAt][time]) - (singleAt > 1 ? std::stod(a[singleAt - 1][time]) : 0.0);
+    REQUIRE(events > 0);
+    CHECK(value("events") == events);
+    CHECK(value("real_time_per_event_us") == Approx(1e6 * length / events).epsilon(1e-3));
+    CHECK(value("cost_per_event_us") == Approx(1e6 * single * length / events).epsilon(1e-3));
+    CHECK(value("queries_per_event") == Approx(std::stod(a[singleAt][column("collision_checks")]) / events).epsilon(1e-3));
+  }
   // Not the same run: refused, naming the folder.
   const test::ProgramResult mixed =
       test::runProgram(GJKX_FRAME_RATIOS, "\"mixed=" + (out / "a").string() + "," + (out / "c").string() + "\"");
