@@ -29,6 +29,8 @@
 //   SLOWEST LABEL frame=K events=E cost_per_event_us=... real_time_per_event_us=...
 //           pairs_per_event=... queries_per_event=...
 //
+// (a slowest frame of no events has only its frame and events=0)
+//
 // When two runs are given, one more line compares their slowest frames:
 //
 //   RATIO SECOND_vs_FIRST_slowest_frame=<second's slowest / first's slowest>
@@ -143,13 +145,15 @@ int main(int argc, char** argv) {
     // number for the frame to run in real time.
     try {
       const double events = frames.at("events")[worst];
-      const double perEvent = events > 0 ? 1.0 / events : 0.0;
-      const double pairs = frames.at("rechecked_after_collisions")[worst] + frames.at("rechecked_at_step_ends")[worst];
-      std::printf("SLOWEST %s frame=%zu events=%.0f cost_per_event_us=%.4g real_time_per_event_us=%.4g "
-                  "pairs_per_event=%.4g queries_per_event=%.4g\n",
-                  label.c_str(), worst + 1, events, 1e6 * ratio[worst] * frames.frameLength(worst) * perEvent,
-                  1e6 * frames.frameLength(worst) * perEvent, pairs * perEvent,
-                  frames.at("collision_checks")[worst] * perEvent);
+      std::printf("SLOWEST %s frame=%zu events=%.0f", label.c_str(), worst + 1, events);
+      if (events > 0) {  // (a frame of no events has no cost per event)
+        const double length = frames.frameLength(worst);
+        const double pairs = frames.at("rechecked_after_collisions")[worst] + frames.at("rechecked_at_step_ends")[worst];
+        std::printf(" cost_per_event_us=%.4g real_time_per_event_us=%.4g pairs_per_event=%.4g queries_per_event=%.4g",
+                    1e6 * ratio[worst] * length / events, 1e6 * length / events, pairs / events,
+                    frames.at("collision_checks")[worst] / events);
+      }
+      std::printf("\n");
     } catch (const std::exception& e) {
       std::fprintf(stderr, "gjkx_frame_ratios: %s\n", e.what());
       return 1;

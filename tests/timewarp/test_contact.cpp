@@ -44,6 +44,22 @@ Scene sceneOf(const std::string& settings, const std::vector<std::string>& bodie
   return parseScene("{ " + settings + R"(, "bodies": [)" + list + "] }", "test");
 }
 
+/// A pose at `at`, turned at random (a unit quaternion of four uniform numbers).
+Pose<double> randomPose(std::mt19937& random, const Eigen::Vector3d& at) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Pose<double> p;
+  p.rotation = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
+                   .toRotationMatrix();
+  p.translation = at;
+  return p;
+}
+
+/// GJK on two placed pieces, cold.
+GjkResult<double> closestPoints(const Shape<double>& a, const Pose<double>& poseA, const Shape<double>& b,
+                                const Pose<double>& poseB) {
+  return gjk(Placed<ShapeRef<double>>{a, poseA}, Placed<ShapeRef<double>>{b, poseB}, GjkSettings<double>{}, nullptr);
+}
+
 /// What a run of a resting scene did: the deepest overlap of any two bodies at any frame's
 /// end (by the independent reference library), how far any body moved after the first
 /// second (bodies placed touching or a little apart are first brought to the rest
@@ -344,24 +360,15 @@ TEST_CASE("hybrid: pieces that overlap read an overlap in their manifold, never 
     for (int k = 0; k < 10; ++k) points.push_back(0.1 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
     return Shape<double>(Polytope<double>::hull(points));
   };
-  const auto pose = [&](const Eigen::Vector3d& at) {
-    Pose<double> p;
-    p.rotation = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
-                     .toRotationMatrix();
-    p.translation = at;
-    return p;
-  };
   int overlaps = 0, missed = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const Shape<double> a = polytope();
     const Shape<double> b = trial % 3 == 0   ? Shape<double>(Sphere<double>(0.1))
                             : trial % 3 == 1 ? Shape<double>(Box<double>(Eigen::Vector3d(0.1, 0.07, 0.04)))
                                              : polytope();
-    const Pose<double> poseA = pose(Eigen::Vector3d::Zero());
-    Pose<double> poseB = pose(0.5 * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized());
-    const auto closest = [&] {
-      return gjk(Placed<ShapeRef<double>>{a, poseA}, Placed<ShapeRef<double>>{b, poseB}, GjkSettings<double>{}, nullptr);
-    };
+    const Pose<double> poseA = randomPose(random, Eigen::Vector3d::Zero());
+    Pose<double> poseB = randomPose(random, 0.5 * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized());
+    const auto closest = [&] { return closestPoints(a, poseA, b, poseB); };
     const GjkResult<double> far = closest();
     REQUIRE(far.status == GjkStatus::Separated);
     const Eigen::Vector3d n = far.z / far.distance;  // from A to B
@@ -401,21 +408,12 @@ TEST_CASE("hybrid: pieces that overlap read an overlap in a manifold as deep as 
       cloud.push_back(0.05 * Eigen::Vector3d(unit(random), 0.5 * unit(random), 0.3 * unit(random)));
     return Shape<double>(Polytope<double>::hull(cloud));
   };
-  const auto pose = [&](const Eigen::Vector3d& at) {
-    Pose<double> p;
-    p.rotation = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
-                     .toRotationMatrix();
-    p.translation = at;
-    return p;
-  };
   int overlaps = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Shape<double> a = polytope(10 + trial % 30), b = polytope(10 + (trial / 7) % 30);
-    const Pose<double> poseA = pose(Eigen::Vector3d::Zero());
-    Pose<double> poseB = pose(0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized());
-    const auto closest = [&] {
-      return gjk(Placed<ShapeRef<double>>{a, poseA}, Placed<ShapeRef<double>>{b, poseB}, GjkSettings<double>{}, nullptr);
-    };
+    const Pose<double> poseA = randomPose(random, Eigen::Vector3d::Zero());
+    Pose<double> poseB = randomPose(random, 0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized());
+    const auto closest = [&] { return closestPoints(a, poseA, b, poseB); };
     const GjkResult<double> far = closest();
     REQUIRE(far.status == GjkStatus::Separated);
     const Eigen::Vector3d n = far.z / far.distance;  // from A to B
