@@ -219,10 +219,11 @@ TEST_CASE("hybrid: a box that lands slowly inside an interval is left to the nex
 
 TEST_CASE("hybrid: a bar spinning at 400 rad/s flies in steps of its own and strikes the floor where kinematics says") {
   // A bar 1 m long turning end over end about y (a stable principal axis: torque-free, ω stays)
-  // while it falls: 2.65 turns a frame, far more than a path can hold. Under the hybrid it
-  // flies a quarter turn at a time (its own steps), under microcollisions the frame is cut
-  // into quarter turns for every body; neither may restart a frame, and both must strike the
-  // floor when its lowest corner first comes within the tolerance, by the kinematics below.
+  // while it falls: 2.65 turns a frame, far more than a path can hold. Under both models it
+  // flies a quarter turn at a time (its own steps: under microcollisions it spins faster
+  // than StepTuning::spinIntervals quarter turns a frame); neither may restart a frame, and
+  // both must strike the floor when its lowest corner first comes within the tolerance, by
+  // the kinematics below.
   const double omega = 400, z0 = 0.6;
   const auto lowest = [&](double t) {  // the lowest corner's height at t
     const double theta = omega * t;
@@ -474,12 +475,13 @@ TEST_CASE("hybrid: in a pile, a pair the solver holds that closes slower than th
   }
 }
 
-TEST_CASE("the counters of a step's anatomy: cascades within collisions, own steps only under the hybrid, pairs checked again") {
+TEST_CASE("the counters of a step's anatomy: cascades within collisions, struck steps only under the hybrid, pairs checked again") {
   // The pile of the test above, both models. What a frame's time goes to at a crash
   // (frames.csv): the instant pass's impulses after each event's own, the hybrid's own steps of
   // struck bodies, and the body pairs Timewarp checks again after a collision and at a step's
   // end. In a box every body has a pair (the box), so each resolved event and each step end
-  // checks at least one pair again.
+  // checks at least one pair again. Under microcollisions a body flies steps of its own only
+  // when it spins too fast for its interval, and no body of this pile does.
   for (const ContactModel model : {ContactModel::Hybrid, ContactModel::Microcollisions}) {
     Scene scene = fallingIntoABox(24, 2, 2026);
     scene.run.contact = model;

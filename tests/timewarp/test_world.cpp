@@ -468,6 +468,47 @@ TEST_CASE("world: a fast spinner is flown in intervals of a quarter turn, one to
   }
 }
 
+TEST_CASE("world: under microcollisions a body spinning past spinIntervals quarter turns a frame flies in steps of its own") {
+  // Under Timewarp with microcollisions a frame is cut into intervals of a quarter turn of
+  // its fastest body among those spinning at most StepTuning::spinIntervals quarter turns a
+  // frame (8: 150.8 rad/s at 24 frames a second); a body spinning faster flies a quarter
+  // turn at a time, each step's end an event of its own (FrameCounters::stepEnds). Boxes
+  // spinning about their shortest principal axis (z) keep turning at the same rate.
+  const auto run = [](const std::string& bodies) {
+    const Scene scene = parseScene(R"({ "duration": 0.25, "gravity": [0, 0, 0], "contact": "microcollisions", "bodies": [)" +
+                                   bodies + "] }");
+    World world(scene, checked());
+    FrameCounters sum;
+    while (!world.done()) sum += world.step().counters;
+    return std::make_pair(sum, world.stateOf(0));
+  };
+  const std::string fast = R"({ "name": "fast", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 1000] })";
+  const std::string slow = R"({ "name": "slow", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [5, 0, 0], "angular_velocity": [0, 0, 100] })";
+  const StepTuning tuning;
+  REQUIRE(1000 > tuning.spinIntervals * quarterTurn * 24);
+  REQUIRE(100 < tuning.spinIntervals * quarterTurn * 24);
+  // 1000 rad/s alone: the frames are not cut (6 frames, one interval each); its own steps
+  // are a quarter turn each, 0.25 s * 1000 rad/s / quarterTurn of them.
+  const auto [alone, spun] = run(fast);
+  CHECK(alone.intervals == 6);
+  CHECK(alone.spinRestarts == 0);
+  CHECK(alone.stepEnds >= long(std::floor(250 / quarterTurn)) - 6);
+  const Eigen::Matrix3d turned = Eigen::AngleAxisd(250.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  CHECK((spun.worldFromBody.rotation - turned).norm() < 1e-6);
+  CHECK(spun.angularVelocity.z() == Approx(1000.0));
+  // 100 rad/s cuts every frame into ceil(100 / 24 / quarterTurn) = 6 intervals, and the fast
+  // box still flies its own steps within them.
+  const auto [both, spunWith] = run(fast + "," + slow);
+  CHECK(both.intervals == 6 * long(std::ceil(100.0 / 24 / quarterTurn)));
+  CHECK(both.stepEnds > 0);
+  CHECK((spunWith.worldFromBody.rotation - turned).norm() < 1e-6);
+  // The slow box alone: its intervals hold it, no step of its own.
+  const auto [slowAlone, unused] = run(slow);
+  (void)unused;
+  CHECK(slowAlone.intervals == both.intervals);
+  CHECK(slowAlone.stepEnds == 0);
+}
+
 TEST_CASE("world: a ball thrown at 10^6 m/s 2 mm over a box passes clean, neither struck nor reported tunnelling") {
   // The solver's time tolerance is the time the pair needs to close half a tolerance: at
   // the solver's default (sqrt(eps) of the frame) the ball moved 14 m in float, and a hit

@@ -241,7 +241,7 @@ std::vector<int> resolve(StepContext& step, const Hit& hit, bool instantPass, co
     flown.push_back(b);
     // (Under the hybrid, a step of its own: StepTuning::struckStep.)
     double end = ownStepEnd(step, s.state, tc, std::max(body.path.t1, step.intervalEnd));
-    if (step.ownSteps()) end = std::min(end, tc + tuning.struckStep / step.scene.frameRate);
+    if (step.struckSteps()) end = std::min(end, tc + tuning.struckStep / step.scene.frameRate);
     if (body.path.t1 > tc) {
       ++c.bodiesRolledBack;
       step.record(TraceEvent::Kind::Rollback, b, -1, body.path.t1, tc);

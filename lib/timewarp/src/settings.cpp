@@ -44,6 +44,7 @@ void StepTuning::validate(const std::string& field) const {
   atLeast(contactIterations, 1, field + ".contactIterations");
   positive(contactSettled, field + ".contactSettled");
   atLeast(contactIntervals, 1, field + ".contactIntervals");
+  atLeast(spinIntervals, 1, field + ".spinIntervals");
   if (!(struckStep > 0 && struckStep <= 1)) failInput(field + ".struckStep", "must lie in (0, 1]");
   if (!(contactCheckBand > 0 && contactCheckBand <= restSeparation))
     failInput(field + ".contactCheckBand", "must lie in (0, restSeparation]");

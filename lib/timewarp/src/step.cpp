@@ -49,9 +49,9 @@ bool fly(StepContext& step, int b, double t0, double t1) {
   return flyFrom(step, b, renormalized(step.bodies[b].path.stateAt(t0)), t0, t1);
 }
 
-bool ownStepsOf(const Scene& scene) {
-  return scene.run.ordering == Ordering::Timewarp && scene.run.contact == ContactModel::Hybrid;
-}
+bool ownStepsOf(const Scene& scene) { return scene.run.ordering == Ordering::Timewarp; }
+
+bool struckStepsOf(const Scene& scene) { return ownStepsOf(scene) && scene.run.contact == ContactModel::Hybrid; }
 
 double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1) {
   const double spin = state.angularVelocity.norm();
@@ -84,7 +84,7 @@ bool flyAll(StepContext& step, double t0, double t1) {
     // whole interval would most often be struck again long before the interval's end, and
     // their work beyond that lost. Where the step ends it flies on, on the same path.
     double end = t1;
-    if (step.ownSteps() && t0 - body.lastStruck <= t1 - t0) end = std::min(t1, t0 + struckStep);
+    if (step.struckSteps() && t0 - body.lastStruck <= t1 - t0) end = std::min(t1, t0 + struckStep);
     if (!flyOwnStep(step, int(b), t0, end)) return false;
   }
   return true;

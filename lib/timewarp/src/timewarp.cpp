@@ -24,12 +24,11 @@ template <typename S>
 void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1) {
   std::vector<WorldBody>& bodies = step.bodies;
   FrameState& frame = step.frame;
-  // Every body runs ahead to the interval's end on its own: its local time is T1. Under the
-  // hybrid, a body spinning fast runs a quarter turn at a time (a path holds less than half a
-  // turn): where its step ends, before T1, is an event of its own, where it flies on (a
-  // *step end*). (Under microcollisions the frame is cut into quarter turns of the fastest
-  // body instead, world.cpp: there resting contact is collisions, and each checks its
-  // bodies' pairs again to the interval's end; short intervals keep that short.)
+  // Every body runs ahead to the interval's end on its own: its local time is T1. A body
+  // spinning faster than the interval allows runs a quarter turn at a time (a path holds
+  // less than half a turn): where its step ends, before T1, is an event of its own, where it
+  // flies on (a *step end*). (Which bodies cut the frame into shorter intervals instead:
+  // world.cpp.)
   if (!flyAll(step, T0, T1)) return;
   struct StepEnd {
     double time;  // where the body's path ends

@@ -96,14 +96,24 @@ FrameReport World::step() {
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
   // each a quarter turn of the fastest body at most.
-  // Under Timewarp and the hybrid a body takes steps of its own instead (timewarp.hpp):
-  // only the group bodies count, whose velocities the contact solver sets once an interval
-  // (a group body turning fast is solved again sooner; its path is cut into quarter turns).
+  // Under Timewarp a body that spins faster takes steps of its own instead (timewarp.hpp),
+  // and only some bodies count. Under the hybrid, the group bodies, whose velocities the
+  // contact solver sets once an interval (a group body turning fast is solved again sooner;
+  // its path is cut into quarter turns). Under microcollisions, the bodies that spin at most
+  // StepTuning::spinIntervals quarter turns a frame: there resting contact is a train of
+  // collisions, each checking its bodies' pairs again to the interval's end, and intervals
+  // of a few quarter turns keep those checks short; a body spinning faster (a cartilage of a
+  // gram thrown off the torso's crash at hundreds of radians a second) would cut every
+  // body's frame into dozens of intervals, each a broad phase and a check of every pair.
   const bool ownSteps = ownStepsOf(scene_);
+  const bool hybrid = scene_.run.contact == ContactModel::Hybrid;
+  const double cutsUpTo = tuning.spinIntervals * quarterTurn * scene_.frameRate;
   double fastest = 0;
-  for (const WorldBody& body : bodies_)
-    if (!body.rigid.isStatic() && (!ownSteps || body.contactFlight))
-      fastest = std::max(fastest, body.path.end.angularVelocity.norm());
+  for (const WorldBody& body : bodies_) {
+    const double spin = body.path.end.angularVelocity.norm();
+    if (!body.rigid.isStatic() && (!ownSteps || (hybrid ? body.contactFlight : spin <= cutsUpTo)))
+      fastest = std::max(fastest, spin);
+  }
   const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / quarterTurn, 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
   // collision until the next, so under gravity its frames are cut into

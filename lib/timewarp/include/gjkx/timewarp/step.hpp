@@ -113,11 +113,16 @@ struct FrameState {
 /// turn (motion.hpp); a frame's intervals, or a body's own steps, keep to a quarter.
 constexpr double quarterTurn = 0.25 * M_PI;
 
-/// True if the scene's bodies fly in steps of their own (ownStepEnd): under Timewarp with the
-/// hybrid contact model. Under microcollisions resting contact is a train of collisions, each
-/// checking its bodies' pairs again to the interval's end, and the frame's intervals of a
-/// quarter turn of the fastest body keep those checks short.
+/// True if the scene's bodies fly in steps of their own (ownStepEnd): under Timewarp, where
+/// every body runs on its own clock. A body that spins too fast for its interval flies a
+/// quarter turn at a time instead of cutting every body's frame; which bodies still cut the
+/// frame into intervals is the world's choice (world.cpp, StepTuning::spinIntervals). The
+/// heap and fixed steps move all bodies together and cut the frame for the fastest.
 bool ownStepsOf(const Scene& scene);
+
+/// True if a body a collision struck flies a step of at most StepTuning::struckStep of a
+/// frame (flyAll, resolve): under Timewarp with the hybrid contact model.
+bool struckStepsOf(const Scene& scene);
 
 /// What the parts of a step share: the world's lasting state, and the frame being run.
 struct StepContext {
@@ -158,6 +163,8 @@ struct StepContext {
   bool hybrid() const { return scene.run.contact == ContactModel::Hybrid; }
   /// True when bodies fly in steps of their own (ownStepsOf, ownStepEnd).
   bool ownSteps() const { return ownStepsOf(scene); }
+  /// True when struck bodies fly steps of StepTuning::struckStep (struckStepsOf).
+  bool struckSteps() const { return struckStepsOf(scene); }
   /// True when §5 runs exactly as the paper wrote it (the world's or the scene's solver):
   /// none of this project's warm starts.
   bool paperSolver() const { return settings.solver == ToiSolverMode::Paper || scene.run.solver == ToiSolverMode::Paper; }
@@ -207,8 +214,9 @@ void touched(StepContext& step, int i, int pi, int j, int pj);
 /// Where a path of the body in `state` that starts at t0 ends, towards t1: t1, or under
 /// own steps (StepContext::ownSteps) a quarter turn at the body's angular speed
 /// if that comes sooner (never shorter than StepTuning::minPath). A path holds less than
-/// half a turn (motion.hpp): a body spinning faster flies on in steps of its own rather than
-/// cutting every body's interval (world.cpp).
+/// half a turn (motion.hpp): a body spinning faster than its interval allows (one the world
+/// did not cut the frame for, or one a collision spun up) flies on in steps of its own
+/// rather than making the frame run again in shorter intervals.
 double ownStepEnd(const StepContext& step, const BodyState& state, double t0, double t1);
 /// Flies body b on from its state at t0 in a path that ends at ownStepEnd towards t1 (see
 /// fly); false on a spin overflow.

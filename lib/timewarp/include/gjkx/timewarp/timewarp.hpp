@@ -17,11 +17,11 @@
 ///   bodies are checked again, from t_c: every other event stays valid. The events that
 ///   used the rolled-back paths after t_c are stale: each event carries the *versions* of
 ///   its bodies' paths, and an event whose bodies have moved on is dropped when taken.
-/// - **Own steps** (under the hybrid, StepContext::ownSteps). A body spinning fast flies a
-///   quarter turn at a time, and a body a collision struck a step of StepTuning::struckStep
-///   at most: where its path ends before T1 is a *step end*, an event at which it flies on
-///   and its pairs are checked again from there. A pair is checked as far as both its
-///   bodies' paths reach.
+/// - **Own steps** (StepContext::ownSteps). A body spinning faster than its interval allows
+///   flies a quarter turn at a time, and under the hybrid a body a collision struck a step
+///   of StepTuning::struckStep at most: where its path ends before T1 is a *step end*, an
+///   event at which it flies on and its pairs are checked again from there. A pair is
+///   checked as far as both its bodies' paths reach.
 /// - **The global virtual time** is the time of the earliest event still queued: no body's
 ///   history before it can change any more. The interval is final once the queue is empty:
 ///   the global virtual time has passed T1, and the history before it is discarded.
