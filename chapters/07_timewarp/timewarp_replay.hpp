@@ -64,8 +64,8 @@ void replayFrames(const gjkx::Scene& scene, const gjkx::WorldSettings& settings,
     out.T1 = T1;
     for (const gjkx::WorldBody& b : bodies) {
       out.start.push_back(b.path.stateAt(T0));
-      // One interval a frame holds a quarter turn of the fastest body (world.cpp).
-      if (!b.rigid.isStatic() && b.path.end.angularVelocity.norm() * (T1 - T0) > gjkx::quarterTurn)
+      // One interval a frame holds an eighth of a turn of the fastest body (world.cpp).
+      if (!b.rigid.isStatic() && b.path.end.angularVelocity.norm() * (T1 - T0) > gjkx::eighthTurn)
         throw std::runtime_error("body '" + b.name + "' spins too fast for one interval a frame (the replay shows slow scenes)");
     }
     gjkx::FrameState frame(bodies.size());

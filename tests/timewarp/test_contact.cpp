@@ -220,8 +220,8 @@ TEST_CASE("hybrid: a box that lands slowly inside an interval is left to the nex
 TEST_CASE("hybrid: a bar spinning at 400 rad/s flies in steps of its own and strikes the floor where kinematics says") {
   // A bar 1 m long turning end over end about y (a stable principal axis: torque-free, ω stays)
   // while it falls: 2.65 turns a frame, far more than a path can hold. Under both models it
-  // flies a quarter turn at a time (its own steps: under microcollisions it spins faster
-  // than StepTuning::spinIntervals quarter turns a frame); neither may restart a frame, and
+  // flies an eighth of a turn at a time (its own steps: under microcollisions it spins faster
+  // than StepTuning::spinIntervals eighths of a turn a frame); neither may restart a frame, and
   // both must strike the floor when its lowest corner first comes within the tolerance, by
   // the kinematics below.
   const double omega = 400, z0 = 0.6;
@@ -513,10 +513,10 @@ TEST_CASE("the counters of a step's anatomy: cascades within collisions, struck 
   }
 }
 
-TEST_CASE("hybrid: a box spinning at 400 rad/s on the floor, held by the contact solver, flies in quarter turns, and no frame runs again") {
+TEST_CASE("hybrid: a box spinning at 400 rad/s on the floor, held by the contact solver, flies in eighths of a turn, and no frame runs again") {
   // A flat box resting on the floor and turning about the vertical at 400 rad/s: 4.2 rad
   // in one of a frame's four intervals at 24 frames a second, more than a path can hold.
-  // The contact solver holds it from the first interval on; its bodies fly a quarter turn
+  // The contact solver holds it from the first interval on; its bodies fly an eighth of a turn
   // at a time (ownStepEnd), so the frame is never run again in shorter intervals, and the
   // box stays on the floor, never through it.
   const double h = 0.02;

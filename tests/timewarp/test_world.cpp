@@ -440,11 +440,11 @@ TEST_CASE("world: every run gives the same result") {
   }
 }
 
-TEST_CASE("world: a fast spinner is flown in intervals of a quarter turn, one too fast for 4096 of them is refused") {
+TEST_CASE("world: a fast spinner is flown in intervals of an eighth of a turn, one too fast for 4096 of them is refused") {
   // A box spinning about its shortest principal axis (z) keeps turning at the same rate:
   // after 0.5 s at 80 rad/s (3.3 rad a frame, more than a free-flight path holds) it has
   // turned 40 rad about z. A frame is run again in more intervals when a body spins too
-  // fast for them, up to 4096 (a quarter turn each: 77,000 rad/s at 24 frames a second); at
+  // fast for them, up to 4096 (an eighth of a turn each: 77,000 rad/s at 24 frames a second); at
   // 200,000 rad/s even those hold too little, and the world says so.
   const Scene scene = parseScene(R"({ "duration": 0.5, "gravity": [0, 0, 0], "bodies": [
       { "name": "spinner", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 80] } ] })");
@@ -468,11 +468,11 @@ TEST_CASE("world: a fast spinner is flown in intervals of a quarter turn, one to
   }
 }
 
-TEST_CASE("world: under microcollisions a body spinning past spinIntervals quarter turns a frame flies in steps of its own") {
-  // Under Timewarp with microcollisions a frame is cut into intervals of a quarter turn of
-  // its fastest body among those spinning at most StepTuning::spinIntervals quarter turns a
-  // frame (8: 150.8 rad/s at 24 frames a second); a body spinning faster flies a quarter
-  // turn at a time, each step's end an event of its own (FrameCounters::stepEnds). Boxes
+TEST_CASE("world: under microcollisions a body spinning past spinIntervals eighths of a turn a frame flies in steps of its own") {
+  // Under Timewarp with microcollisions a frame is cut into intervals of an eighth of a turn of
+  // its fastest body among those spinning at most StepTuning::spinIntervals eighths of a turn a
+  // frame (8: one turn a frame, 150.8 rad/s at 24 frames a second); a body spinning faster
+  // flies an eighth of a turn at a time, each step's end an event of its own (FrameCounters::stepEnds). Boxes
   // spinning about their shortest principal axis (z) keep turning at the same rate.
   const auto run = [](const std::string& bodies) {
     const Scene scene = parseScene(R"({ "duration": 0.25, "gravity": [0, 0, 0], "contact": "microcollisions", "bodies": [)" +
@@ -485,21 +485,21 @@ TEST_CASE("world: under microcollisions a body spinning past spinIntervals quart
   const std::string fast = R"({ "name": "fast", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [0, 0, 0], "angular_velocity": [0, 0, 1000] })";
   const std::string slow = R"({ "name": "slow", "shape": {"box": [0.3, 0.2, 0.1]}, "position": [5, 0, 0], "angular_velocity": [0, 0, 100] })";
   const StepTuning tuning;
-  REQUIRE(1000 > tuning.spinIntervals * quarterTurn * 24);
-  REQUIRE(100 < tuning.spinIntervals * quarterTurn * 24);
+  REQUIRE(1000 > tuning.spinIntervals * eighthTurn * 24);
+  REQUIRE(100 < tuning.spinIntervals * eighthTurn * 24);
   // 1000 rad/s alone: the frames are not cut (6 frames, one interval each); its own steps
-  // are a quarter turn each, 0.25 s * 1000 rad/s / quarterTurn of them.
+  // are an eighth of a turn each, 0.25 s * 1000 rad/s / eighthTurn of them.
   const auto [alone, spun] = run(fast);
   CHECK(alone.intervals == 6);
   CHECK(alone.spinRestarts == 0);
-  CHECK(alone.stepEnds >= long(std::floor(250 / quarterTurn)) - 6);
+  CHECK(alone.stepEnds >= long(std::floor(250 / eighthTurn)) - 6);
   const Eigen::Matrix3d turned = Eigen::AngleAxisd(250.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   CHECK((spun.worldFromBody.rotation - turned).norm() < 1e-6);
   CHECK(spun.angularVelocity.z() == Approx(1000.0));
-  // 100 rad/s cuts every frame into ceil(100 / 24 / quarterTurn) = 6 intervals, and the fast
+  // 100 rad/s cuts every frame into ceil(100 / 24 / eighthTurn) = 6 intervals, and the fast
   // box still flies its own steps within them.
   const auto [both, spunWith] = run(fast + "," + slow);
-  CHECK(both.intervals == 6 * long(std::ceil(100.0 / 24 / quarterTurn)));
+  CHECK(both.intervals == 6 * long(std::ceil(100.0 / 24 / eighthTurn)));
   CHECK(both.stepEnds > 0);
   CHECK((spunWith.worldFromBody.rotation - turned).norm() < 1e-6);
   // The slow box alone: its intervals hold it, no step of its own.

@@ -492,7 +492,7 @@ bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double 
     frame.heldPairs.insert(frame.heldPairs.end(), frame.contactPairs.begin(), frame.contactPairs.end());
   }
   // Each group's bodies fly over the interval on the solved velocities, gravity off. Under
-  // Timewarp a body spinning fast flies a quarter turn at a time, as a free body does
+  // Timewarp a body spinning fast flies an eighth of a turn at a time, as a free body does
   // (ownStepEnd; where its step ends it flies on, on the same velocities): a path holds
   // less than half a turn, and a light body a collision spun up (a cartilage of a few grams
   // in the torso's crash) would otherwise make the whole frame run again.

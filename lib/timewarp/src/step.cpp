@@ -57,7 +57,7 @@ double ownStepEnd(const StepContext& step, const BodyState& state, double t0, do
   const double spin = state.angularVelocity.norm();
   if (!step.ownSteps() || !(spin > 0)) return t1;
   const double minPath = step.settings.tuning.minPath / step.scene.frameRate;
-  return std::min(t1, t0 + std::max(quarterTurn / spin, minPath));
+  return std::min(t1, t0 + std::max(eighthTurn / spin, minPath));
 }
 
 bool flyOwnStep(StepContext& step, int b, double t0, double t1) {

@@ -25,7 +25,7 @@ void runTimewarp(StepContext& step, NarrowPhase<S>& narrow, double T0, double T1
   std::vector<WorldBody>& bodies = step.bodies;
   FrameState& frame = step.frame;
   // Every body runs ahead to the interval's end on its own: its local time is T1. A body
-  // spinning faster than the interval allows runs a quarter turn at a time (a path holds
+  // spinning faster than the interval allows runs an eighth of a turn at a time (a path holds
   // less than half a turn): where its step ends, before T1, is an event of its own, where it
   // flies on (a *step end*). (Which bodies cut the frame into shorter intervals instead:
   // world.cpp.)

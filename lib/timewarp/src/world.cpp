@@ -95,33 +95,33 @@ FrameReport World::step() {
   const StepTuning& tuning = settings_.tuning;
   // A free-flight path holds less than half a turn (motion.hpp, FreeFlightPath): when a
   // body spins fast (a ball rolling at speed), the frame is run as several intervals,
-  // each a quarter turn of the fastest body at most.
+  // each an eighth of a turn of the fastest body at most.
   // Under Timewarp a body that spins faster takes steps of its own instead (timewarp.hpp),
   // and only some bodies count. Under the hybrid, the group bodies, whose velocities the
   // contact solver sets once an interval (a group body turning fast is solved again sooner;
-  // its path is cut into quarter turns). Under microcollisions, the bodies that spin at most
-  // StepTuning::spinIntervals quarter turns a frame: there resting contact is a train of
+  // its path is cut into eighths of a turn). Under microcollisions, the bodies that spin at most
+  // StepTuning::spinIntervals eighths of a turn a frame: there resting contact is a train of
   // collisions, each checking its bodies' pairs again to the interval's end, and intervals
-  // of a few quarter turns keep those checks short; a body spinning faster (a cartilage of a
+  // of a few eighths of a turn keep those checks short; a body spinning faster (a cartilage of a
   // gram thrown off the torso's crash at hundreds of radians a second) would cut every
   // body's frame into dozens of intervals, each a broad phase and a check of every pair.
   const bool ownSteps = ownStepsOf(scene_);
   const bool hybrid = scene_.run.contact == ContactModel::Hybrid;
-  const double cutsUpTo = tuning.spinIntervals * quarterTurn * scene_.frameRate;
+  const double cutsUpTo = tuning.spinIntervals * eighthTurn * scene_.frameRate;
   double fastest = 0;
   for (const WorldBody& body : bodies_) {
     const double spin = body.path.end.angularVelocity.norm();
     if (!body.rigid.isStatic() && (!ownSteps || (hybrid ? body.contactFlight : spin <= cutsUpTo)))
       fastest = std::max(fastest, spin);
   }
-  const auto quarterTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / quarterTurn, 1e6))); };
+  const auto eighthTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / eighthTurn, 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a
   // collision until the next, so under gravity its frames are cut into
   // StepTuning::contactIntervals at least (fixed steps keep their own: `fixed_substeps` per frame).
   const bool cut = scene_.run.contact == ContactModel::Hybrid && scene_.gravity.squaredNorm() > 0 &&
                    scene_.run.ordering != Ordering::FixedStep;
   const int fewest = cut ? tuning.contactIntervals : 1;
-  int intervals = std::clamp(std::max(fewest, quarterTurns(fastest)), 1, tuning.maxIntervals);
+  int intervals = std::clamp(std::max(fewest, eighthTurns(fastest)), 1, tuning.maxIntervals);
   // A collision can spin a light body up past that within an interval (a cartilage of a few
   // grams struck at the crash: 370 rad/s); then the frame is run again from its start in
   // intervals short enough for the new spin, from what the bodies were at T0. The same
@@ -183,7 +183,7 @@ FrameReport World::step() {
           narrow_);
       if (!step.abandoned()) break;
       const FrameState::SpinOverflow spin = frame.spinOverflow;
-      const int needed = std::max(2 * intervals, quarterTurns(spin.angularSpeed));
+      const int needed = std::max(2 * intervals, eighthTurns(spin.angularSpeed));
       if (needed > tuning.maxSpinIntervals)
         throw std::runtime_error(spin.what + " even in " + std::to_string(intervals) +
                                  " intervals of a frame; raise frame_rate");

@@ -125,13 +125,14 @@ struct StepTuning {
   /// half the collisions and 60% of the wall time of one interval per frame; with landings,
   /// 2 made the torso's crash frames slower (seeds 1 to 4), 8 its whole runs slower.
   int contactIntervals = 4;
-  /// Under Timewarp with microcollisions, a frame is cut into intervals of a quarter turn
-  /// of its fastest body among those that spin at most this many quarter turns a frame; a
-  /// body spinning faster flies in steps of its own (world.cpp, ownStepEnd). 8 (150 rad/s at
-  /// 24 frames a second): on the torso dropped in eight poses, microcollisions took 39% less
-  /// processor time than with every body cutting the frame (up to 47 intervals), and frames
-  /// slower than three times real time went from 156 to 21 of 576; 16 and 32 took 30% and
-  /// 21% less; the paper's Brent's method takes more iterations in longer intervals (docs 08).
+  /// Under Timewarp with microcollisions, a frame is cut into intervals of an eighth of a
+  /// turn of its fastest body among those that spin at most this many eighths of a turn a
+  /// frame; a body spinning faster flies in steps of its own (world.cpp, ownStepEnd). 8 (one
+  /// turn a frame, 150.8 rad/s at 24 frames a second): on the torso dropped in eight poses,
+  /// microcollisions took 28 to 39% less processor time (two passes) than with every body
+  /// cutting the frame (up to 47 intervals), and frames slower than three times real time
+  /// went from 135-156 to 21-24 of 576; 16 and 32 took 30% and 21% less; the paper's
+  /// Brent's method takes more iterations in longer intervals (docs 08).
   int spinIntervals = 8;
   /// Under the hybrid, a body struck by a collision flies on in a step of at most this much
   /// of a frame (timewarp.hpp's own steps), its pairs checked again over that step only;
@@ -157,7 +158,7 @@ struct StepTuning {
   long eventCap = 200000;
   /// See eventCap.
   long eventCapPerBody = 1000;
-  /// A frame is run in intervals of at most a quarter turn of its fastest body; at the
+  /// A frame is run in intervals of at most an eighth of a turn of its fastest body; at the
   /// start of a frame at most this many (more come only from a spin overflow). 64.
   int maxIntervals = 64;
   /// A frame that would need more intervals than this for a body's spin stops the run with

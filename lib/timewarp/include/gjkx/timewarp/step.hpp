@@ -109,13 +109,14 @@ struct FrameState {
   explicit FrameState(std::size_t bodies = 0);
 };
 
-/// The most a path turns: a quarter turn (rad). A free-flight path holds less than half a
-/// turn (motion.hpp); a frame's intervals, or a body's own steps, keep to a quarter.
-constexpr double quarterTurn = 0.25 * M_PI;
+/// The most a path of the world turns: an eighth of a turn (pi/4 rad). A free-flight path
+/// holds less than half a turn (motion.hpp); a frame's intervals and a body's own steps keep
+/// to a quarter of that, so that a collision spinning a body up within a path leaves room.
+constexpr double eighthTurn = 0.25 * M_PI;
 
 /// True if the scene's bodies fly in steps of their own (ownStepEnd): under Timewarp, where
 /// every body runs on its own clock. A body that spins too fast for its interval flies a
-/// quarter turn at a time instead of cutting every body's frame; which bodies still cut the
+/// eighth of a turn at a time instead of cutting every body's frame; which bodies still cut the
 /// frame into intervals is the world's choice (world.cpp, StepTuning::spinIntervals). The
 /// heap and fixed steps move all bodies together and cut the frame for the fastest.
 bool ownStepsOf(const Scene& scene);
@@ -212,7 +213,7 @@ bool flyFrom(StepContext& step, int b, const BodyState& state, double t0, double
 /// bodies only: the pass never starts from a static one (the plant would gather every contact).
 void touched(StepContext& step, int i, int pi, int j, int pj);
 /// Where a path of the body in `state` that starts at t0 ends, towards t1: t1, or under
-/// own steps (StepContext::ownSteps) a quarter turn at the body's angular speed
+/// own steps (StepContext::ownSteps) an eighth of a turn at the body's angular speed
 /// if that comes sooner (never shorter than StepTuning::minPath). A path holds less than
 /// half a turn (motion.hpp): a body spinning faster than its interval allows (one the world
 /// did not cut the frame for, or one a collision spun up) flies on in steps of its own

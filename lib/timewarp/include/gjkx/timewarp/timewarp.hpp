@@ -18,7 +18,7 @@
 ///   used the rolled-back paths after t_c are stale: each event carries the *versions* of
 ///   its bodies' paths, and an event whose bodies have moved on is dropped when taken.
 /// - **Own steps** (StepContext::ownSteps). A body spinning faster than its interval allows
-///   flies a quarter turn at a time, and under the hybrid a body a collision struck a step
+///   flies an eighth of a turn at a time, and under the hybrid a body a collision struck a step
 ///   of StepTuning::struckStep at most: where its path ends before T1 is a *step end*, an
 ///   event at which it flies on and its pairs are checked again from there. A pair is
 ///   checked as far as both its bodies' paths reach.

@@ -7,7 +7,7 @@
 ///
 /// ```
 /// scene ──> buildBodies (body.hpp)                 narrow phase in the scene's scalar (narrow_phase.hpp)
-/// frame [T0, T1], in intervals of at most a quarter turn of the fastest body:
+/// frame [T0, T1], in intervals of at most an eighth of a turn of the fastest body:
 ///   hybrid contact model only: contacts, groups, the contact solver (contact_solver.hpp)
 ///   ordering: timewarp.hpp | toi_heap.hpp | fixed_step.hpp
 ///     ├─ free flight of the moving bodies (step.hpp)
