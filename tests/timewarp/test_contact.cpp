@@ -480,8 +480,7 @@ TEST_CASE("the counters of a step's anatomy: cascades within collisions, struck 
   // (frames.csv): the instant pass's impulses after each event's own, the hybrid's own steps of
   // struck bodies, and the body pairs Timewarp checks again after a collision and at a step's
   // end. In a box every body has a pair (the box), so each resolved event and each step end
-  // checks at least one pair again. Under microcollisions a body flies steps of its own only
-  // when it spins too fast for its interval, and no body of this pile does.
+  // checks at least one pair again.
   for (const ContactModel model : {ContactModel::Hybrid, ContactModel::Microcollisions}) {
     Scene scene = fallingIntoABox(24, 2, 2026);
     scene.run.contact = model;
@@ -503,12 +502,14 @@ TEST_CASE("the counters of a step's anatomy: cascades within collisions, struck 
     // each checking the broad phase's candidates at its start.
     CHECK(sum.intervals >= (hybrid ? 4 : 1) * 48);
     CHECK(sum.checkedAtIntervalStarts > 0);
+    CHECK(sum.recheckedAtStepEnds >= sum.stepEnds);
     if (hybrid) {
-      CHECK(sum.stepEnds > 0);
-      CHECK(sum.recheckedAtStepEnds >= sum.stepEnds);
+      // Struck bodies fly steps of StepTuning::struckStep: a step end for most collisions.
+      CHECK(sum.stepEnds * 10 > sum.collisions);
     } else {
-      CHECK(sum.stepEnds == 0);
-      CHECK(sum.recheckedAtStepEnds == 0);
+      // No struck steps: a body flies a step of its own only when a collision spins it past
+      // what its interval allows, which happens to a handful of these boxes at most.
+      CHECK(sum.stepEnds * 100 <= sum.collisions);
     }
   }
 }
