@@ -553,6 +553,9 @@ TEST_CASE("world: a step's tunables are checked by name before the bodies are bu
   settings = {};
   settings.tuning.struckStep = 0;  // a step of no length would never end
   CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.struckStep"));
+  settings = {};
+  settings.tuning.spinIntervals = 0;  // no body could cut a frame
+  CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.spinIntervals"));
 }
 
 TEST_CASE("world: a frame past the event cap ends with its status, counted, not with an exception") {
