@@ -99,20 +99,25 @@ FrameReport World::step() {
   // Under Timewarp a body that spins faster takes steps of its own instead (timewarp.hpp),
   // and only some bodies count. Under the hybrid, the group bodies, whose velocities the
   // contact solver sets once an interval (a group body turning fast is solved again sooner;
-  // its path is cut into eighths of a turn). Under microcollisions, the bodies that spin at most
-  // StepTuning::spinIntervals eighths of a turn a frame: there resting contact is a train of
-  // collisions, each checking its bodies' pairs again to the interval's end, and intervals
-  // of a few eighths of a turn keep those checks short; a body spinning faster (a cartilage of a
-  // gram thrown off the torso's crash at hundreds of radians a second) would cut every
-  // body's frame into dozens of intervals, each a broad phase and a check of every pair.
+  // its path is cut into eighths of a turn). Under microcollisions, the bodies that spin at
+  // most StepTuning::spinIntervals eighths of a turn a frame: there resting contact is a
+  // train of collisions, each checking its bodies' pairs again to the interval's end, and
+  // intervals of a few eighths of a turn keep those checks short; a body spinning faster (a
+  // cartilage of a gram thrown off the torso's crash at hundreds of radians a second) would
+  // cut every body's frame into dozens of intervals, each a broad phase and a check of
+  // every pair.
   const bool ownSteps = ownStepsOf(scene_);
   const bool hybrid = scene_.run.contact == ContactModel::Hybrid;
   const double cutsUpTo = tuning.spinIntervals * eighthTurn * scene_.frameRate;
+  const auto cutsTheFrame = [&](const WorldBody& body, double spin) {
+    if (body.rigid.isStatic()) return false;
+    if (!ownSteps) return true;
+    return hybrid ? body.contactFlight : spin <= cutsUpTo;
+  };
   double fastest = 0;
   for (const WorldBody& body : bodies_) {
     const double spin = body.path.end.angularVelocity.norm();
-    if (!body.rigid.isStatic() && (!ownSteps || (hybrid ? body.contactFlight : spin <= cutsUpTo)))
-      fastest = std::max(fastest, spin);
+    if (cutsTheFrame(body, spin)) fastest = std::max(fastest, spin);
   }
   const auto eighthTurns = [&](double speed) { return int(std::ceil(std::min(speed * (T1 - T0) / eighthTurn, 1e6))); };
   // The hybrid solves its contacts at each interval's start: a pair that lands inside one is a

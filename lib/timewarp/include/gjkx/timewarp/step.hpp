@@ -115,10 +115,10 @@ struct FrameState {
 constexpr double eighthTurn = 0.25 * M_PI;
 
 /// True if the scene's bodies fly in steps of their own (ownStepEnd): under Timewarp, where
-/// every body runs on its own clock. A body that spins too fast for its interval flies a
-/// eighth of a turn at a time instead of cutting every body's frame; which bodies still cut the
-/// frame into intervals is the world's choice (world.cpp, StepTuning::spinIntervals). The
-/// heap and fixed steps move all bodies together and cut the frame for the fastest.
+/// every body runs on its own clock. A body that spins too fast for its interval flies an
+/// eighth of a turn at a time instead of cutting every body's frame; which bodies still cut
+/// the frame into intervals is the world's choice (world.cpp, StepTuning::spinIntervals).
+/// The heap and fixed steps move all bodies together and cut the frame for the fastest.
 bool ownStepsOf(const Scene& scene);
 
 /// True if a body a collision struck flies a step of at most StepTuning::struckStep of a
