@@ -59,7 +59,7 @@ const Switch kSwitches[] = {
     {"warmStart", &ToiSettings<double>::warmStart},     {"supportHints", &ToiSettings<double>::supportHints},
     {"farEndReuse", &ToiSettings<double>::farEndReuse}, {"probe", &ToiSettings<double>::probe},
     {"leap", &ToiSettings<double>::leap},               {"separatingAtStart", &ToiSettings<double>::separatingAtStart},
-    {"inFrameOfP", &ToiSettings<double>::inFrameOfP},   {"fallingFrame", &ToiSettings<double>::fallingFrame},
+    {"inFrameOfP", &ToiSettings<double>::inFrameOfP},
 };
 
 // What a configuration did over all queries.

@@ -677,60 +677,6 @@ TEMPLATE_TEST_CASE("time of impact, by hand: a box falling onto the floor under 
   }
 }
 
-// Two unit boxes falling side by side under the same gravity, Q gaining on P at 4 m/s
-// along x, 2 apart: their faces meet at T* = (2 - tol) / 4, whatever gravity does, since
-// both fall alike. In the world's frame the certified test's margin counts each box's 10 m/s^2
-// ((1/8)(10 + 10) per unit time squared: 2.5 over the whole interval, far more than the
-// gap), and the solver proves it away restart by restart; in the falling frame
-// (ToiSettings::fallingFrame) the two fly straight, and the query is that of linear
-// motion. Both answers must be the hit at T*, with the witnesses back in the world where
-// the boxes have fallen to (5 T^2 below where they started); the falling frame takes fewer
-// complete tests. Against a static floor there is no common gravity: the frame stays the
-// world's and the answer is the same to the bit.
-TEMPLATE_TEST_CASE("time of impact, by hand: two boxes falling side by side meet in the falling frame",
-                   "[toi][hand][accelerating]", float, double) {
-  using S = TestType;
-  using V = Vector3<S>;
-  const V g(0, 0, -10);
-  const auto P = moving(unitBox<S>(), Motion<S>::constantAcceleration(Pose<S>(), V::Zero(), g));
-  const auto Q = moving(unitBox<S>(), Motion<S>::constantAcceleration(Pose<S>::translate(V(3, 0, 0)), V(-4, 0, 0), g));
-  ToiSettings<S> falling;  // the default: on
-  falling.variant = ExtrusionVariant::Certified;
-  ToiSettings<S> world = falling;
-  world.fallingFrame = false;
-  const double tol = falling.collisionTolerance, timeTol = falling.timeTolerance;
-  const double expected = (2 - tol) / 4;
-  const double roundoff = sizeof(S) == sizeof(float) ? 2e-5 : 1e-12;
-  const auto inWorld = timeOfImpact(P, Q, S(0), S(1), world);
-  const auto inFall = timeOfImpact(P, Q, S(0), S(1), falling);
-  for (const auto& [name, r] : {std::pair{"world", inWorld}, std::pair{"falling", inFall}}) {
-    const double T = double(r.time), gap = 2 - 4 * T, drop = 5 * T * T;
-    INFO(scalarName<S>() << ", " << name << " frame: " << toString(r.status) << " at " << T << ", expected "
-                         << expected << ", complete tests " << r.gjkRuns);
-    REQUIRE(r.status == ToiStatus::Hit);
-    CHECK(T <= expected + timeTol);
-    CHECK(gap > 0);
-    CHECK(gap <= tol + 4 * timeTol + roundoff);
-    CHECK(r.normal.isApprox(V(1, 0, 0), sizeof(S) == sizeof(float) ? S(1e-2) : S(1e-6)));
-    // The witnesses lie on P's face x = 0.5 and Q's x = 2.5 - 4T, where the boxes are at T.
-    CHECK(std::abs(double(r.witnessP.x()) - 0.5) <= 1e-3);
-    CHECK(std::abs(double(r.witnessQ.x()) - (2.5 - 4 * T)) <= 1e-3);
-    for (const V& w : {r.witnessP, r.witnessQ}) {
-      CHECK(double(w.z()) >= -drop - 0.5 - 1e-3);
-      CHECK(double(w.z()) <= -drop + 0.5 + 1e-3);
-    }
-  }
-  CHECK(inFall.gjkRuns < inWorld.gjkRuns);
-  // A box falling onto a static floor: nothing in common to take out.
-  const auto floor = fixedAt(Box<S>(V(5, 5, S(0.5))), V(0, 0, S(-0.5)));
-  const auto box = moving(unitBox<S>(), Motion<S>::constantAcceleration(Pose<S>::translate(V(0, 0, S(2.5))),
-                                                                        V(S(0.3), 0, 0), g));
-  const auto a = timeOfImpact(box, floor, S(0), S(1), world), b = timeOfImpact(box, floor, S(0), S(1), falling);
-  CHECK(a.status == b.status);
-  CHECK(a.time == b.time);
-  CHECK(a.gjkRuns == b.gjkRuns);
-}
-
 // =======================================================================================
 // Random linear motions against the reference.
 

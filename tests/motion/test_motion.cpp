@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 using gjkx::Motion;
 using gjkx::Pose;
@@ -82,37 +81,6 @@ TEMPLATE_TEST_CASE("motion constant acceleration", "[motion]", float, double) {
   const Motion<S> late = Motion<S>::constantAcceleration(Pose<S>::translate(Vec<S>(0, 0, 10)), Vec<S>(1, 0, 2),
                                                          Vec<S>(0, 0, -10), S(1));
   CHECK(near<S>(late.pose(S(3)).translation, Vec<S>(2, 0, -6)));
-}
-
-// A ballistic motion seen from a frame falling with acceleration a (at rest and the world's
-// at t = 0) is the world's pose moved by -a t^2 / 2, for a motion whose own clock starts
-// before, at or after 0; with a the motion's own acceleration it flies straight; the
-// rotation is the world's. Only ballistic motions can be seen so.
-TEMPLATE_TEST_CASE("motion seen from a falling frame", "[motion]", float, double) {
-  using S = TestType;
-  const Vec<S> g(0, 0, -10);
-  for (const S t0 : {S(-0.25), S(0), S(0.5)}) {
-    const Motion<S> ballistic = Motion<S>::constantAcceleration(Pose<S>::translate(Vec<S>(1, 2, 3)), Vec<S>(1, 0, 2), g, t0);
-    const Motion<S> flight = Motion<S>::freeFlight(Pose<S>::translate(Vec<S>(1, 2, 3)), Vec<S>(1, 0, 2), g,
-                                                   Eigen::AngleAxis<S>(S(0.5), Vec<S>(0, 0, 1)).toRotationMatrix(), t0,
-                                                   t0 + S(1));
-    for (const Motion<S>& m : {ballistic, flight}) {
-      REQUIRE(m.ballisticAcceleration());
-      CHECK(*m.ballisticAcceleration() == g);
-      const Motion<S> fallen = m.falling(g);
-      CHECK(fallen.ballisticAcceleration()->isZero());  // flies straight in the falling frame
-      CHECK(fallen.bound().linearAcceleration == S(0));
-      for (const S t : {S(-0.25), S(0), S(0.3), S(0.75), S(1.5)}) {
-        INFO("t0 " << t0 << ", t " << t);
-        CHECK(near<S>(fallen.pose(t).translation, m.pose(t).translation - g * (S(0.5) * t * t)));
-        CHECK(angleBetween<S>(fallen.pose(t).rotation, m.pose(t).rotation) <= tol<S>());
-      }
-    }
-  }
-  CHECK_FALSE(Motion<S>::fixed(Pose<S>::translate(Vec<S>(1, 0, 0))).ballisticAcceleration());
-  CHECK_FALSE(Motion<S>::screw(Pose<S>(), Vec<S>(1, 0, 0), Vec<S>(0, 0, 1)).ballisticAcceleration());
-  CHECK_THROWS_AS(Motion<S>::fixed(Pose<S>()).falling(g), std::logic_error);
-  CHECK_THROWS_AS(Motion<S>::constantVelocity(Pose<S>(), Vec<S>(1, 0, 0)).falling(g), std::logic_error);
 }
 
 // Screw: angular velocity pi about z is a half turn per unit time, so at t = 0.5 the

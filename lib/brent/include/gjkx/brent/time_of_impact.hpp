@@ -57,7 +57,7 @@
 /// tolerance (`probe`); a *leap* doubles a creeping restart's advance (`leap`); a grazing
 /// pass may end within an accepted band (`acceptedBand`); a contact leaving at t0 is
 /// told apart (`separatingAtStart`); and the query runs in P's frame and on its own clock
-/// (`inFrameOfP`, `onQueryClock`), falling with the bodies' common gravity (`fallingFrame`). The bracket's refinements are in toi_refinements.hpp,
+/// (`inFrameOfP`, `onQueryClock`). The bracket's refinements are in toi_refinements.hpp,
 /// whose file comment says why Brent needs them; what each buys is measured in
 /// figures/data/toi-refinements.md.
 ///
@@ -112,18 +112,6 @@ namespace gjkx {
 /// holds as asked. A time the caller cannot hold is reported at the latest one it can
 /// before it (see `ToiSolver::report`). A motion that starts at \f$t_0\f$ reads its own
 /// \f$t - t_0\f$ exactly either way; at \f$t_0 = 0\f$ nothing changes.
-///
-/// Two bodies flying ballistic paths under the same gravity g are seen, last, from a frame
-/// that falls with g (`fallingFrame`; Einstein's lift): every pose moved by
-/// \f$-\tfrac12 g\tau^2\f$, the same for both, so every distance between them, and every
-/// time they meet, is the world's. In that frame they fly without gravity, and the certified
-/// margin \f$\tfrac{\Delta^2}{8}(D_P + D_Q)\f$ (certified_margin.hpp) loses the \f$|g|\f$ of
-/// each D: over the torso's interval of a quarter frame, \f$2 \cdot 9.81 \cdot (1/96)^2 / 8\f$ =
-/// 0.27 mm, most of its collision tolerance (0.35 mm), which the solver otherwise proves
-/// away in restarts. The witness points go back
-/// to the world with the frame's fall at their time; separating vectors and normals are
-/// directions, which a translation leaves alone. A static body, or a body under no gravity,
-/// gives nothing to take out: the frame is then the world's.
 template <typename MovingP, typename MovingQ>
 ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ& Q, typename MovingP::Scalar t0,
                                                  typename MovingP::Scalar t1,
@@ -150,15 +138,11 @@ ToiResult<typename MovingP::Scalar> timeOfImpact(const MovingP& P, const MovingQ
     const S duration = t1 - t0;
     // an interval too long for S stays on the caller's clock
     const S clock = settings.onQueryClock && std::isfinite(duration) ? t0 : S(0);
-    // The falling frame is the query's at its time 0, t0: on the caller's clock (t0 far
-    // from 0) it would have fallen far, and its coordinates lost what the frame of P keeps.
-    const Vector3<S> falling =
-        settings.fallingFrame && clock == t0 ? detail::commonAcceleration(P, Q) : Vector3<S>::Zero();
-    if (origin.squaredNorm() > S(0) || clock != S(0) || falling.squaredNorm() > S(0)) {  // else: already there
-      const MovingP localP = detail::localBody(P, Vector3<S>(-origin), clock, falling);
-      const MovingQ localQ = detail::localBody(Q, Vector3<S>(-origin), clock, falling);
+    if (origin.squaredNorm() > S(0) || clock != S(0)) {  // already there: nothing to change
+      const MovingP localP = detail::localBody(P, Vector3<S>(-origin), clock);
+      const MovingQ localQ = detail::localBody(Q, Vector3<S>(-origin), clock);
       return run(detail::ToiSolver<MovingP, MovingQ>(localP, localQ, t0 - clock, t1 - clock, settings, trace, origin,
-                                                     clock, coherence, falling));
+                                                     clock, coherence));
     }
   }
   return run(detail::ToiSolver<MovingP, MovingQ>(P, Q, t0, t1, settings, trace, Vector3<S>::Zero(), S(0), coherence));

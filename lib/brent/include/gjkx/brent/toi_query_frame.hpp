@@ -2,8 +2,7 @@
 /// @brief The frame and the clock a time-of-impact query runs in, beyond the paper: the
 /// origin at P's position at \f$t_0\f$ and time 0 at \f$t_0\f$, so that GJK's arithmetic sees
 /// the bodies' small relative coordinates and Brent's bracket a clock relative to the
-/// interval (`detail::queryOrigin`, `detail::localBody`); and, for two bodies under the
-/// same gravity, a frame that falls with it (`detail::commonAcceleration`).
+/// interval (`detail::queryOrigin`, `detail::localBody`).
 ///
 /// Part of the solver of gjkx/brent/time_of_impact.hpp, the header to include; why and
 /// what it buys: `timeOfImpact`.
@@ -47,40 +46,12 @@ template <typename X>
 struct CanRetime<X, std::void_t<decltype(std::declval<const X&>().retimed(std::declval<typename X::Scalar>()))>>
     : std::true_type {};
 
-/// True for a body type whose ballistic flight can be seen from a falling frame
-/// (`Moving<Shape>`: `Motion::falling`).
-template <typename X>
-struct CanFall : std::false_type {};
-/// True for a body type whose ballistic flight can be seen from a falling frame.
-template <typename Shape>
-struct CanFall<Moving<Shape>> : std::true_type {};
-
-/// The acceleration both bodies' origins share, when both fly ballistic paths under the
-/// same one (gravity, bit for bit); zero otherwise: a static body, or two different
-/// accelerations, leave nothing to take out (`ToiSettings::fallingFrame`).
-template <typename X, typename Y>
-Vector3<typename X::Scalar> commonAcceleration(const X& P, const Y& Q) {
-  using S = typename X::Scalar;
-  if constexpr (CanFall<X>::value && CanFall<Y>::value) {
-    const auto a = P.motion.ballisticAcceleration();
-    const auto b = Q.motion.ballisticAcceleration();
-    if (a && b && *a == *b) return *a;
-  }
-  return Vector3<S>::Zero();
-}
-
 /// A body seen from the query's frame (origin moved by `offset`) and on its clock (0 at `clock`).
-/// With `falling` nonzero, seen from the frame that falls with that acceleration and is the
-/// query's at its time 0 (`Motion::falling`).
 template <typename X>
-X localBody(const X& body, const Vector3<typename X::Scalar>& offset, typename X::Scalar clock,
-            const Vector3<typename X::Scalar>& falling = Vector3<typename X::Scalar>::Zero()) {
-  X local = clock == 0 ? body.translated(offset)
-                       : (offset.squaredNorm() == 0 ? body.retimed(clock) : body.translated(offset).retimed(clock));
-  if constexpr (CanFall<X>::value) {
-    if (falling.squaredNorm() > 0) return std::move(local).falling(falling);
-  }
-  return local;
+X localBody(const X& body, const Vector3<typename X::Scalar>& offset, typename X::Scalar clock) {
+  if (clock == 0) return body.translated(offset);
+  if (offset.squaredNorm() == 0) return body.retimed(clock);
+  return body.translated(offset).retimed(clock);
 }
 
 }  // namespace detail

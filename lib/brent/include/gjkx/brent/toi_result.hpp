@@ -140,11 +140,6 @@ struct ToiSettings {
   /// *The query's clock.* Run the query on times \f$t - t_0\f$ (see `timeOfImpact`); false
   /// runs it on the caller's clock, as the paper does (coarse in float far from t = 0).
   bool onQueryClock = true;
-  /// *The falling frame.* Two bodies flying ballistic paths under the same gravity are seen
-  /// from a frame that falls with it (see `timeOfImpact`): their relative motion has no
-  /// gravity, and the certified margin none of its \f$\tfrac18|g|\Delta^2\f$ per body. Only
-  /// on the query's clock (`onQueryClock`); false keeps the world's frame, as the paper does.
-  bool fallingFrame = true;
 
   /// §5 exactly as the paper wrote it: the paper's extrusion test, Brent's method on the
   /// approximate maximum supporting distance, a cold complete test at every restart, and
@@ -156,7 +151,7 @@ struct ToiSettings {
     settings.acceptedAfter = 0;
     settings.warmStart = settings.coherence = settings.supportHints = false;
     settings.farEndReuse = settings.probe = settings.leap = settings.acceptedBand = false;
-    settings.separatingAtStart = settings.inFrameOfP = settings.onQueryClock = settings.fallingFrame = false;
+    settings.separatingAtStart = settings.inFrameOfP = settings.onQueryClock = false;
     return settings;
   }
   /// This project's solver: every refinement on (the default settings).

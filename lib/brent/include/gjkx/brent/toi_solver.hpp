@@ -70,9 +70,8 @@ class ToiSolver {
   /// result holds all its separating vectors: built in place, it is not copied).
   ToiSolver(const MovingP& P, const MovingQ& Q, S t0, S t1, const ToiSettings<S>& settings, ToiTrace<S>* trace,
             const Vector3<S>& origin = Vector3<S>::Zero(), S clock = S(0),
-            const ExtrusionCache<S>* carried = nullptr, const Vector3<S>& falling = Vector3<S>::Zero())
+            const ExtrusionCache<S>* carried = nullptr)
       : origin_(origin),
-        falling_(falling),
         clock_(clock),
         P_(P),
         Q_(Q),
@@ -397,7 +396,7 @@ class ToiSolver {
       tauT = t - clock_;
     }
     if (tauT == tau) {
-      takeContact(result_, t, test, worldOrigin(tau));
+      takeContact(result_, t, test, origin_);
       return;
     }
     contactAt(t, tauT);
@@ -414,22 +413,12 @@ class ToiSolver {
     const GjkResult<S> there = gjk(P_.at(tau), Q_.at(tau), settings_.gjk);
     ++result_.gjkRuns;
     result_.sdEvaluations += there.iterations;  // one supporting distance per GJK iteration
-    takeContact(result_, t, there, worldOrigin(tau));
-  }
-
-  /// Where the query's frame has its origin in the world at `tau` (on the query's clock):
-  /// P's position at \f$t_0\f$, and, in a falling frame, as far as it has fallen since,
-  /// \f$\tfrac12 a\tau^2\f$ (see `timeOfImpact`).
-  Vector3<S> worldOrigin(S tau) const {
-    return falling_.squaredNorm() > S(0) ? Vector3<S>(origin_ + falling_ * (S(0.5) * tau * tau)) : origin_;
+    takeContact(result_, t, there, origin_);
   }
 
   /// Where the query's frame has its origin, in the world (P's position at \f$t_0\f$; see
   /// `timeOfImpact`).
   Vector3<S> origin_;
-  /// The acceleration of the query's frame, when it falls with the bodies' common gravity
-  /// (zero otherwise; see `timeOfImpact`).
-  Vector3<S> falling_;
   /// The caller's time at which the query's clock reads 0 (\f$t_0\f$; see `timeOfImpact`).
   S clock_;
   /// The moving body P, seen from the query's frame and on the query's clock.

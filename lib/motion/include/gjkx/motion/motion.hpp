@@ -8,8 +8,6 @@
 
 #include <gjkx/motion/pose.hpp>
 
-#include <optional>
-#include <stdexcept>
 #include <type_traits>
 #include <variant>
 
@@ -322,47 +320,6 @@ class Motion {
             m.t1 -= clock;
           } else if constexpr (!std::is_same_v<M, StaticMotion<Scalar>>) {
             m.t0 -= clock;
-          }
-        },
-        moved.motion_);
-    return moved;
-  }
-  /// The constant acceleration of the body origin, for a ballistic motion (constant
-  /// acceleration, free flight); none for the others (a static body, linear motion, a screw,
-  /// an interpolation), which `falling` cannot take.
-  std::optional<Vector3<Scalar>> ballisticAcceleration() const {
-    return std::visit(
-        [](const auto& m) -> std::optional<Vector3<Scalar>> {
-          using M = std::decay_t<decltype(m)>;
-          if constexpr (std::is_same_v<M, ConstantAcceleration<Scalar>> || std::is_same_v<M, FreeFlightPath<Scalar>>)
-            return m.acceleration;
-          else
-            return std::nullopt;
-        },
-        motion_);
-  }
-  /// The same ballistic motion seen from a frame that falls with acceleration `a` from rest,
-  /// and is the world's at time 0: `falling(a).pose(t)` is `pose(t)` moved by
-  /// \f$-\tfrac12 a t^2\f$. Two bodies under the same gravity g, seen from the frame that
-  /// falls with g, fly without it (time_of_impact.hpp, `ToiSettings::fallingFrame`).
-  ///
-  /// **Derivation.** With \f$\tau = t - t_0\f$ the motion's own time,
-  /// \f$p_0 + v\tau + \tfrac12 A\tau^2 - \tfrac12 a (\tau + t_0)^2
-  /// = (p_0 - \tfrac12 a t_0^2) + (v - a t_0)\,\tau + \tfrac12 (A - a)\,\tau^2\f$:
-  /// the same kind of motion, its start moved by \f$-\tfrac12 a t_0^2\f$, its velocity by
-  /// \f$-a t_0\f$ and its acceleration by \f$-a\f$; the rotation is unchanged. Throws
-  /// std::logic_error for a motion that is not ballistic (`ballisticAcceleration`).
-  Motion falling(const Vector3<Scalar>& a) const {
-    Motion moved = *this;
-    std::visit(
-        [&a](auto& m) {
-          using M = std::decay_t<decltype(m)>;
-          if constexpr (std::is_same_v<M, ConstantAcceleration<Scalar>> || std::is_same_v<M, FreeFlightPath<Scalar>>) {
-            m.start.translation -= a * (Scalar(0.5) * m.t0 * m.t0);
-            m.velocity -= a * m.t0;
-            m.acceleration -= a;
-          } else {
-            throw std::logic_error("Motion::falling: only a ballistic motion can be seen from a falling frame");
           }
         },
         moved.motion_);

@@ -89,11 +89,6 @@ struct Moving {
     motion = motion.retimed(clock);
     return std::move(*this);
   }
-  /// The same body seen from a frame that falls with acceleration `a` (Motion::falling).
-  Moving falling(const Vector3<Scalar>& a) && {
-    motion = motion.falling(a);
-    return std::move(*this);
-  }
   /// The largest acceleration of a point of the body: \f$a + \alpha r + \omega^2 r\f$ with r the
   /// shape's bounding radius about its body origin (the centre of rotation).
   Scalar accelerationBound() const { return motion.bound().pointAcceleration(shape.boundingRadius()); }
