@@ -2,7 +2,8 @@
 // wrote: stacks and a pyramid that stand within one collision tolerance, a heavy box on a
 // light one, Coulomb friction that holds a box below its friction angle and lets it slide
 // at g (sin θ − μ cos θ) above it, a ball that rolls at (5/7) g sin θ, a pushed box that
-// stops after v² / (2 μ g), no energy from any contact solve, no bounce from a contact struck
+// stops after v² / (2 μ g), a friction step that is the least energy on Coulomb's disc, no
+// energy from any contact solve, no bounce from a contact struck
 // inside an interval, and the same run twice.
 //
 // The hybrid advances contact groups by semi-implicit Euler (the solved velocity over the
@@ -11,6 +12,7 @@
 // with ½ a t² within 2% run at 120 frames a second for 1 to 2 s (an error of 1/n, under 1%).
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/timewarp/contact_manifold.hpp>
+#include <gjkx/timewarp/contact_solver.hpp>
 #include <gjkx/timewarp/pile.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>
@@ -570,4 +572,49 @@ TEST_CASE("hybrid: a box spinning flat on the floor slows at the rate of Coulomb
   CHECK(measured == Approx(alpha).epsilon(0.02));
   CHECK(std::abs(world.stateOf(1).angularVelocity.z()) <= 1e-3);  // stopped by 1.2 s (w0 / alpha = 0.76 s)
   CHECK(slowest >= -1e-3);                                        // and not turned back
+}
+
+TEST_CASE("hybrid: a point's friction step is the least energy on Coulomb's disc, and slides against its slip") {
+  // frictionInDisc against a search of the disc: random tangent blocks K (well and badly
+  // conditioned), impulses inside the disc and slips. φ(f) = s·(f − f0) + ½ (f − f0)ᵀ K (f − f0)
+  // is the change of kinetic energy; no point of a fine polar grid of the disc may beat the step.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int sticks = 0, slides = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Eigen::Matrix2d A;
+    A << unit(random), unit(random), unit(random), unit(random);
+    const double spread = trial % 2 ? 1e-3 : 1.0;  // every other block nearly singular along one axis
+    const Eigen::Matrix2d K = A * A.transpose() + spread * Eigen::Matrix2d::Identity();
+    const double limit = 0.05 + std::abs(unit(random));
+    const Eigen::Vector2d old = limit * std::abs(unit(random)) * Eigen::Vector2d(unit(random), unit(random)).normalized();
+    const Eigen::Vector2d slip = (trial % 3 ? 3.0 : 0.05) * Eigen::Vector2d(unit(random), unit(random));
+    const auto phi = [&](const Eigen::Vector2d& f) {
+      const Eigen::Vector2d d = f - old;
+      return slip.dot(d) + 0.5 * d.dot(K * d);
+    };
+    const Eigen::Vector2d f = frictionInDisc(K, K.inverse(), old, slip, limit);
+    INFO("trial " << trial << ": K = [" << K(0, 0) << " " << K(0, 1) << "; " << K(1, 0) << " " << K(1, 1) << "], limit "
+                  << limit << ", f = (" << f.x() << ", " << f.y() << ")");
+    REQUIRE(f.allFinite());
+    CHECK(f.norm() <= limit * (1 + 1e-12));
+    CHECK(phi(f) <= 1e-15);  // never above the energy of the impulse it started from
+    double best = 0;
+    for (int r = 0; r <= 400; ++r)
+      for (int a = 0; a < 720; ++a) {
+        const double radius = limit * r / 400.0, angle = a * M_PI / 360.0;
+        best = std::min(best, phi(radius * Eigen::Vector2d(std::cos(angle), std::sin(angle))));
+      }
+    CHECK(phi(f) <= best + 1e-12);
+    const Eigen::Vector2d left = slip + K * (f - old);  // the slip the step leaves
+    if (f.norm() < limit * (1 - 1e-9)) {
+      ++sticks;
+      CHECK(left.norm() <= 1e-9 * (1 + slip.norm()));  // inside the disc: the point sticks
+    } else {
+      ++slides;
+      if (left.norm() > 1e-9) CHECK(left.normalized().dot(f.normalized()) < -1 + 1e-9);  // against the slip
+    }
+  }
+  CHECK(sticks > 20);
+  CHECK(slides > 20);
 }

@@ -5,6 +5,8 @@
 #include <gjkx/timewarp/narrow_phase.hpp>
 #include <gjkx/timewarp/sleep.hpp>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -59,7 +61,56 @@ double kineticEnergy(const StepContext& step, const std::vector<int>& group, con
   return e;
 }
 
+/// True if a solve raised the kinetic energy from `before` to `after` by more than round-off
+/// (the column `energy_rises` counts such solves).
+bool energyRose(double before, double after) { return after > before * (1 + 1e-9) + 1e-12; }
+
 }  // namespace
+
+// One point's friction step (contact_solver.hpp).
+//
+// An impulse change Δ = f − f0 in the tangent plane changes the slip s by KΔ, and the
+// kinetic energy by φ(f) = s·Δ + ½ ΔᵀKΔ (K the plane's 2x2 block, symmetric, positive
+// definite). Inside the disc the minimiser is where the slip stops, f_u = f0 − K⁻¹s: the
+// point sticks. Outside, the minimiser lies on the circle, where ∇φ = K(f − f0) + s = −η f
+// for some η > 0 (Lagrange): f(η) = (K + ηI)⁻¹ (K f0 − s), and |f(η)| = L fixes η. The
+// slip left, −η f, is opposite to the friction: the point slides, and feels exactly L
+// against its slip (Coulomb's maximal dissipation).
+//
+// In K's eigenbasis (eigenvalues k1, k2; c = Qᵀ(K f0 − s)), |f(η)|² = Σ c_m² / (k_m + η)²,
+// which falls as η grows, and ψ(η) = 1/|f(η)| − 1/L is increasing and concave (as in Moré
+// and Sorensen's trust region step, 1983): Newton's method from η = 0, where ψ < 0, climbs
+// to the root from below without overshooting, in a few steps.
+//
+// Being the exact minimiser over a convex set that holds f0, the step never raises φ: a
+// sweep of such steps only lowers the kinetic energy.
+Eigen::Vector2d frictionInDisc(const Eigen::Matrix2d& K, const Eigen::Matrix2d& inverseK, const Eigen::Vector2d& old,
+                               const Eigen::Vector2d& slip, double limit) {
+  if (!(K.determinant() > 1e-300))  // no response in the plane: nothing to solve, kept in the disc
+    return old.norm() > limit ? Eigen::Vector2d(old * (limit / old.norm())) : old;
+  const Eigen::Vector2d free = old - inverseK * slip;
+  if (free.norm() <= limit) return free;
+  if (limit <= 0) return Eigen::Vector2d::Zero();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen;
+  eigen.computeDirect(K);
+  const Eigen::Vector2d k = eigen.eigenvalues();
+  const Eigen::Vector2d c = eigen.eigenvectors().transpose() * (K * old - slip);
+  double eta = 0;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Eigen::Vector2d q = (k.array() + eta).inverse().matrix();
+    const double size = std::sqrt(c[0] * c[0] * q[0] * q[0] + c[1] * c[1] * q[1] * q[1]);
+    const double psi = 1 / size - 1 / limit;
+    if (psi >= -1e-12 / limit) break;
+    // dψ/dη = Σ c_m² / (k_m + η)³ / |f|³
+    const double slope = (c[0] * c[0] * q[0] * q[0] * q[0] + c[1] * c[1] * q[1] * q[1] * q[1]) / (size * size * size);
+    if (!(slope > 0)) break;
+    eta -= psi / slope;
+  }
+  const Eigen::Vector2d f = eigen.eigenvectors() * ((k.array() + eta).inverse() * c.array()).matrix();
+  const double size = f.norm();
+  return size > limit ? Eigen::Vector2d(f * (limit / size)) : f;  // on the circle (round-off)
+}
+
 
 // ---------------------------------------------------------------------------------------
 // The velocity solve of a group: sequential impulses (Catto 2005). Each row's impulse is
@@ -115,7 +166,6 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       row.point = &p;
       row.massI = I.inverseMass;
       row.massJ = J.inverseMass;
-      row.lambda = p.normalImpulse;
       row.friction = m->friction;
       const Eigen::Vector3d rI = p.point - I.centre, rJ = p.point - J.centre;
       row.d = {n, n.unitOrthogonal(), Eigen::Vector3d::Zero()};
@@ -135,12 +185,6 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       row.tangentScale = row.K.norm();
       // Speculative contact: the point may close by what separates it from rest, no more.
       row.target = -std::max(0.0, p.separation - rest) / dt;
-      // Warm start: last solve's impulses (the friction kept in the contact plane).
-      row.f1 = t1.dot(p.frictionImpulse);
-      row.f2 = t2.dot(p.frictionImpulse);
-      apply(row, 0, row.lambda);
-      apply(row, 1, row.f1);
-      apply(row, 2, row.f2);
       rows.push_back(row);
     }
   }
@@ -162,21 +206,15 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
     for (std::size_t r = 0; r < rows.size(); ++r) {
       Row& row = rows[r];
       if (friction) {
-        // The impulse that stops the point's slip: the tangent plane's 2x2 block solved
-        // exactly (its two directions are coupled through the rotation); if that lies within
-        // Coulomb's disc the point sticks. Else it slides, and feels mu lambda_n against its
-        // slip: the impulse that would stop the slip along it, cut to the disc.
+        // The tangent plane's 2x2 block solved exactly (its two directions are coupled
+        // through the rotation): the impulse that stops the point's slip if that lies within
+        // Coulomb's disc (it sticks), else the best on the disc's edge (it slides, and feels
+        // mu lambda_n against its slip): frictionInDisc.
         const Eigen::Vector2d slip(velocityAlong(row, 1), velocityAlong(row, 2));
         const double speed = slip.norm();
         if (speed > 0) {
           const Eigen::Vector2d old(row.f1, row.f2);
-          Eigen::Vector2d next = old - row.tangentMass * slip;
-          if (next.norm() > limits[r]) {
-            const Eigen::Vector2d t = slip / speed;
-            const double k = t.dot(row.K * t);  // the response along the slip
-            next = old - (k > 0 ? speed / k : 0.0) * t;
-            if (next.norm() > limits[r]) next *= limits[r] / next.norm();
-          }
+          const Eigen::Vector2d next = frictionInDisc(row.K, row.tangentMass, old, slip, limits[r]);
           const Eigen::Vector2d change = next - old;
           row.f1 = next.x();
           row.f2 = next.y();
@@ -201,22 +239,53 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   // projected Gauss-Seidel on a convex quadratic program, and each of its steps can only
   // lower the kinetic energy.
   const int budget = tuning.contactIterations;  // per pass
-  for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
-  for (int pass = 0; pass < 2; ++pass) {
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      Row& row = rows[r];
-      limits[r] = row.friction * row.lambda;
-      const double size = std::hypot(row.f1, row.f2);
-      if (size > limits[r]) {  // a warm start above the new bound is cut to it
-        const double scale = limits[r] / size;
-        apply(row, 1, row.f1 * scale - row.f1);
-        apply(row, 2, row.f2 * scale - row.f2);
-        row.f1 *= scale;
-        row.f2 *= scale;
-      }
+  // The passes, from the stored impulses (warm) or from none (cold).
+  const std::vector<Eigen::Vector3d> v0 = v, w0 = w;
+  const auto solve = [&](bool warm) {
+    v = v0;
+    w = w0;
+    for (Row& row : rows) {
+      // Warm start: last solve's impulses (the friction kept in the contact plane).
+      row.lambda = warm ? row.point->normalImpulse : 0.0;
+      row.f1 = warm ? row.d[1].dot(row.point->frictionImpulse) : 0.0;
+      row.f2 = warm ? row.d[2].dot(row.point->frictionImpulse) : 0.0;
+      apply(row, 0, row.lambda);
+      apply(row, 1, row.f1);
+      apply(row, 2, row.f2);
     }
-    for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
-  }
+    for (int k = 0; k < budget && sweep(false) >= settled; ++k) {}
+    for (int pass = 0; pass < 2; ++pass) {
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        Row& row = rows[r];
+        limits[r] = row.friction * row.lambda;
+        const double size = std::hypot(row.f1, row.f2);
+        if (size > limits[r]) {  // a warm start above the new bound is cut to it
+          const double scale = limits[r] / size;
+          apply(row, 1, row.f1 * scale - row.f1);
+          apply(row, 2, row.f2 * scale - row.f2);
+          row.f1 *= scale;
+          row.f2 *= scale;
+        }
+      }
+      for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
+    }
+  };
+  const auto energy = [&] {
+    double e = 0;
+    for (int b : group) {
+      BodyState s = states[b];
+      s.velocity = v[b];
+      s.angularVelocity = w[b];
+      e += step.bodies[b].rigid.kineticEnergy(s);
+    }
+    return e;
+  };
+  // Warm, the passes start from last solve's impulses, which may leave the energy above
+  // where it was (a body struck since, or sweeps that end at the budget before they have
+  // taken the warm start's excess back). Such a solve is run again cold: from no impulse,
+  // every step of a pass only lowers the energy (frictionInDisc).
+  solve(true);
+  if (energyRose(out.kineticBefore, energy())) solve(false);
   for (const Row& row : rows) {
     row.point->normalImpulse = row.lambda;
     row.point->frictionImpulse = row.f1 * row.d[1] + row.f2 * row.d[2];
@@ -478,7 +547,7 @@ bool solveContacts(StepContext& step, NarrowPhase<S>& narrow, double t0, double 
       const GroupSolve solve = solveGroup(step, groups[g], ofGroup[g], states, dt, true);
       ++c.contactGroups;
       c.contactSweeps += solve.sweeps;
-      if (solve.kineticAfter > solve.kineticBefore * (1 + 1e-9) + 1e-12) ++c.energyRises;
+      if (energyRose(solve.kineticBefore, solve.kineticAfter)) ++c.energyRises;
     }
     step.contactCache.clear();
     for (const Manifold& m : manifolds) {

@@ -63,6 +63,17 @@ struct GroupSolve {
   int sweeps = 0;            ///< sweeps of sequential impulses over the group's points
 };
 
+/// One point's friction step in the velocity solve (§6's future work, the hybrid): the
+/// friction impulse f in Coulomb's disc \f$|f| \le L\f$ (L = \f$\mu\lambda_n\f$) that lowers
+/// the kinetic energy most with every other impulse held, from the current impulse `old`, the
+/// point's slip `slip` (its tangent velocity) and the tangent plane's 2x2 response block `K`
+/// (symmetric, positive semi-definite; `inverseK` its inverse, or zero where it has none).
+/// Inside the disc the point sticks (the slip stops); outside it slides, f on the circle
+/// opposite to the slip that remains. The exact minimiser over a convex set that holds
+/// `old`: the step never raises the energy. The derivation is above the code.
+Eigen::Vector2d frictionInDisc(const Eigen::Matrix2d& K, const Eigen::Matrix2d& inverseK, const Eigen::Vector2d& old,
+                               const Eigen::Vector2d& slip, double limit);
+
 /// Solves the velocities of the bodies `group` at states `states` (indexed by body) against
 /// `manifolds` (those whose bodies are in the group, or static or sleeping) over an interval
 /// of `dt`: sequential impulses, warm-started from each point's stored impulses, which are
