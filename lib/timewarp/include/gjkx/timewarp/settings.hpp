@@ -105,7 +105,8 @@ struct StepTuning {
   /// Sweeps of sequential impulses in each of the three passes of a group's velocity solve,
   /// at most (a pass stops once no impulse changes a velocity by more than
   /// contactSettled). 512: a stack of ten boxes placed touching, cold, needs about 400 in its
-  /// first pass, and a few once warm-started.
+  /// first pass; warm-started, hundreds per interval are still common (Gauss–Seidel shares a
+  /// box's weight between its corners slowly).
   int contactIterations = 512;
   /// When a pass of the velocity solve has converged: no impulse of a sweep changed the
   /// velocity at its point by more than this fraction of restSeparation per interval. 0.1:
