@@ -39,8 +39,7 @@ struct Row {
   std::array<Eigen::Vector3d, 3> armI, armJ;  // r_i x d, r_j x d
   std::array<Eigen::Vector3d, 3> spinI, spinJ;  // I_i^-1 (r_i x d), I_j^-1 (r_j x d)
   double normalMass;
-  Eigen::Matrix2d K;            // the tangent plane's 2x2 block (response along t1, t2)
-  Eigen::Matrix2d tangentMass;  // its inverse
+  TangentBlock tangent;         // the tangent plane's 2x2 block (response along t1, t2)
   double tangentScale;          // the block's size: an impulse times it is a velocity
   double target;  // the least normal velocity allowed (never positive: speculative contact)
   double f1 = 0, f2 = 0;  // the friction impulse along t1 and t2 while the solve runs
@@ -84,29 +83,40 @@ bool energyRose(double before, double after) { return after > before * (1 + 1e-9
 //
 // Being the exact minimiser over a convex set that holds f0, the step never raises φ: a
 // sweep of such steps only lowers the kinetic energy.
-Eigen::Vector2d frictionInDisc(const Eigen::Matrix2d& K, const Eigen::Matrix2d& inverseK, const Eigen::Vector2d& old,
-                               const Eigen::Vector2d& slip, double limit) {
-  if (!(K.determinant() > 1e-300))  // no response in the plane: nothing to solve, kept in the disc
-    return old.norm() > limit ? Eigen::Vector2d(old * (limit / old.norm())) : old;
-  const Eigen::Vector2d free = old - inverseK * slip;
-  if (free.norm() <= limit) return free;
-  if (limit <= 0) return Eigen::Vector2d::Zero();
+TangentBlock TangentBlock::of(const Eigen::Matrix2d& K) {
+  TangentBlock block;
+  block.K = K;
+  block.invertible = K.determinant() > 1e-300;
+  if (!block.invertible) return block;
+  block.inverse = K.inverse();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen;
   eigen.computeDirect(K);
-  const Eigen::Vector2d k = eigen.eigenvalues();
-  const Eigen::Vector2d c = eigen.eigenvectors().transpose() * (K * old - slip);
+  block.axes = eigen.eigenvectors();
+  block.stiffness = eigen.eigenvalues();
+  return block;
+}
+
+Eigen::Vector2d frictionInDisc(const TangentBlock& block, const Eigen::Vector2d& old, const Eigen::Vector2d& slip,
+                               double limit) {
+  if (!block.invertible)  // no response in the plane: nothing to solve, kept in the disc
+    return old.norm() > limit ? Eigen::Vector2d(old * (limit / old.norm())) : old;
+  const Eigen::Vector2d free = old - block.inverse * slip;
+  if (free.norm() <= limit) return free;
+  if (limit <= 0) return Eigen::Vector2d::Zero();
+  const Eigen::Vector2d& k = block.stiffness;
+  const Eigen::Vector2d c = block.axes.transpose() * (block.K * old - slip);
   double eta = 0;
   for (int iteration = 0; iteration < 30; ++iteration) {
-    const Eigen::Vector2d q = (k.array() + eta).inverse().matrix();
-    const double size = std::sqrt(c[0] * c[0] * q[0] * q[0] + c[1] * c[1] * q[1] * q[1]);
+    const double q0 = 1 / (k[0] + eta), q1 = 1 / (k[1] + eta);
+    const double size = std::sqrt(c[0] * c[0] * q0 * q0 + c[1] * c[1] * q1 * q1);
     const double psi = 1 / size - 1 / limit;
     if (psi >= -1e-12 / limit) break;
     // dψ/dη = Σ c_m² / (k_m + η)³ / |f|³
-    const double slope = (c[0] * c[0] * q[0] * q[0] * q[0] + c[1] * c[1] * q[1] * q[1] * q[1]) / (size * size * size);
+    const double slope = (c[0] * c[0] * q0 * q0 * q0 + c[1] * c[1] * q1 * q1 * q1) / (size * size * size);
     if (!(slope > 0)) break;
     eta -= psi / slope;
   }
-  const Eigen::Vector2d f = eigen.eigenvectors() * ((k.array() + eta).inverse() * c.array()).matrix();
+  const Eigen::Vector2d f = block.axes * Eigen::Vector2d(c[0] / (k[0] + eta), c[1] / (k[1] + eta));
   const double size = f.norm();
   return size > limit ? Eigen::Vector2d(f * (limit / size)) : f;  // on the circle (round-off)
 }
@@ -179,10 +189,11 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       const double k = response(I, J, rI, rJ, n, n);
       row.normalMass = k > 0 ? 1.0 / k : 0.0;
       const Eigen::Vector3d &t1 = row.d[1], &t2 = row.d[2];
-      row.K << response(I, J, rI, rJ, t1, t1), response(I, J, rI, rJ, t1, t2), response(I, J, rI, rJ, t2, t1),
+      Eigen::Matrix2d K;
+      K << response(I, J, rI, rJ, t1, t1), response(I, J, rI, rJ, t1, t2), response(I, J, rI, rJ, t2, t1),
           response(I, J, rI, rJ, t2, t2);
-      row.tangentMass = row.K.determinant() > 1e-300 ? Eigen::Matrix2d(row.K.inverse()) : Eigen::Matrix2d::Zero();
-      row.tangentScale = row.K.norm();
+      row.tangent = TangentBlock::of(K);
+      row.tangentScale = K.norm();
       // Speculative contact: the point may close by what separates it from rest, no more.
       row.target = -std::max(0.0, p.separation - rest) / dt;
       rows.push_back(row);
@@ -214,7 +225,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
         const double speed = slip.norm();
         if (speed > 0) {
           const Eigen::Vector2d old(row.f1, row.f2);
-          const Eigen::Vector2d next = frictionInDisc(row.K, row.tangentMass, old, slip, limits[r]);
+          const Eigen::Vector2d next = frictionInDisc(row.tangent, old, slip, limits[r]);
           const Eigen::Vector2d change = next - old;
           row.f1 = next.x();
           row.f2 = next.y();
