@@ -72,7 +72,7 @@ if (twoPanels) {
   set bmargin at screen 0.08
   set yrange [0:stackTop]
   set format y '%g'
-  set ylabel 'execution / simulation time (linear: the parts)' offset 1,0
+  set ylabel 'execution / simulation time (linear: the parts)' offset -1,0
   set xlabel 'simulated time (s)'
   plot @stack
 } else {
