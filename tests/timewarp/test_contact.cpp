@@ -12,7 +12,7 @@
 // with ½ a t² within 2% run at 120 frames a second for 1 to 2 s (an error of 1/n, under 1%).
 #include <gjkx/gjk/gjk.hpp>
 #include <gjkx/timewarp/contact_manifold.hpp>
-#include <gjkx/timewarp/contact_solver.hpp>
+#include <gjkx/timewarp/coulomb_friction.hpp>
 #include <gjkx/timewarp/pile.hpp>
 #include <gjkx/timewarp/scene.hpp>
 #include <gjkx/timewarp/world.hpp>

@@ -47,6 +47,7 @@
 #pragma once
 
 #include <gjkx/timewarp/contact_manifold.hpp>
+#include <gjkx/timewarp/coulomb_friction.hpp>
 #include <gjkx/timewarp/step.hpp>
 
 #include <vector>
@@ -62,29 +63,6 @@ struct GroupSolve {
   double kineticAfter = 0;   ///< after the contacts
   int sweeps = 0;            ///< sweeps of sequential impulses over the group's points
 };
-
-/// The tangent plane's 2x2 response block of a contact point in the velocity solve (§6's
-/// future work, the hybrid): how the point's slip answers a friction impulse, made once per
-/// solve with what each friction step needs of it.
-struct TangentBlock {
-  Eigen::Matrix2d K = Eigen::Matrix2d::Zero();         ///< the block (symmetric, positive semi-definite)
-  Eigen::Matrix2d inverse = Eigen::Matrix2d::Zero();   ///< K⁻¹, zero where K has none
-  Eigen::Matrix2d axes = Eigen::Matrix2d::Identity();  ///< K's eigenvectors, as columns
-  Eigen::Vector2d stiffness = Eigen::Vector2d::Zero();  ///< K's eigenvalues
-  bool invertible = false;                              ///< true where K has an inverse
-  /// The block K with its inverse and eigen decomposition.
-  static TangentBlock of(const Eigen::Matrix2d& K);
-};
-
-/// One point's friction step in the velocity solve (§6's future work, the hybrid): the
-/// friction impulse f in Coulomb's disc \f$|f| \le L\f$ (L = \f$\mu\lambda_n\f$) that lowers
-/// the kinetic energy most with every other impulse held, from the current impulse `old`, the
-/// point's slip `slip` (its tangent velocity) and the tangent plane's response `block`.
-/// Inside the disc the point sticks (the slip stops); outside it slides, f on the circle
-/// opposite to the slip that remains. The exact minimiser over a convex set that holds
-/// `old`: the step never raises the energy. The derivation is above the code.
-Eigen::Vector2d frictionInDisc(const TangentBlock& block, const Eigen::Vector2d& old, const Eigen::Vector2d& slip,
-                               double limit);
 
 /// Solves the velocities of the bodies `group` at states `states` (indexed by body) against
 /// `manifolds` (those whose bodies are in the group, or static or sleeping) over an interval
