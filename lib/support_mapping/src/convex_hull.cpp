@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -404,6 +405,58 @@ ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* 
       edges.insert({std::min(u, v), std::max(u, v)});
     }
   }
+  std::sort(hull.triangles.begin(), hull.triangles.end());
+  buildAdjacency(hull, edges);
+  return hull;
+}
+
+// A triangular prism's faces are known: no hull has to be searched for. With the front
+// triangle a b c and the back one a' b' c' (the same triangle moved by e), the front cap
+// faces away from e and the back cap towards it; each edge u -> v of the front cap, in the
+// cap's outward order, borders the side quad v u u' v', which the shared edge is walked
+// the other way round. A side quad is planar only up to the rounding of its corners (a
+// float piece's), so it is split along the diagonal that keeps it convex: v u u' and
+// v u' v' when v' lies on or below the plane of v u u', else v u v' and u u' v'.
+std::optional<ConvexHull> prismHull(const std::vector<Eigen::Vector3d>& points, const char* field) {
+  checkFinite(points, field);
+  if (points.size() != 6) fail(field, "a prism has 6 points (a triangle and its copy), got " + std::to_string(points.size()));
+  const auto& p = points;
+  const Eigen::Vector3d e = (p[3] - p[0] + p[4] - p[1] + p[5] - p[2]) / 3.0;
+  const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
+  // A triangle with no area, or a copy not moved off its plane, is no prism.
+  if (!(std::abs(n.dot(e)) > 1e-6 * n.norm() * e.norm())) return std::nullopt;
+  ConvexHull hull;
+  hull.vertices = points;
+  hull.inputIndex = {0, 1, 2, 3, 4, 5};
+  const std::array<int, 3> front = n.dot(e) < 0 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 1};
+  hull.triangles.push_back(front);
+  hull.triangles.push_back({front[0] + 3, front[2] + 3, front[1] + 3});
+  for (int k = 0; k < 3; ++k) {
+    const int u = front[k], v = front[(k + 1) % 3], u1 = u + 3, v1 = v + 3;
+    const Eigen::Vector3d normal = (p[u] - p[v]).cross(p[u1] - p[v]);
+    if (normal.dot(p[v1] - p[v]) <= 0) {
+      hull.triangles.push_back({v, u, u1});
+      hull.triangles.push_back({v, u1, v1});
+    } else {
+      hull.triangles.push_back({v, u, v1});
+      hull.triangles.push_back({u, u1, v1});
+    }
+  }
+  // Never a wrong hull: every corner on or below every face (to round-off), as convexHull3d
+  // checks Qhull's; a prism too thin for that is none.
+  double size = 0;
+  for (const auto& q : points) size = std::max(size, q.cwiseAbs().maxCoeff());
+  const double allowed = kOutsideUlps * std::numeric_limits<double>::epsilon() * size;
+  for (const auto& tri : hull.triangles) {
+    const Eigen::Vector3d normal = (p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]);
+    const double length = normal.norm();
+    if (!(length > 0)) return std::nullopt;
+    for (const auto& q : points)
+      if (normal.dot(q - p[tri[0]]) / length > allowed) return std::nullopt;
+  }
+  std::set<std::pair<int, int>> edges;
+  for (const auto& tri : hull.triangles)
+    for (int k = 0; k < 3; ++k) edges.insert({std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])});
   std::sort(hull.triangles.begin(), hull.triangles.end());
   buildAdjacency(hull, edges);
   return hull;

@@ -39,7 +39,7 @@ std::vector<Shape<S>> piecesOf(const PieceSource& source) {
   for (const auto& piece : source.meshPieces) {
     std::vector<Eigen::Matrix<S, 3, 1>> cast;
     for (const auto& p : piece) cast.push_back(p.cast<S>());
-    pieces.push_back(Polytope<S>::hull(cast));
+    pieces.push_back(source.meshPrisms ? Polytope<S>::prism(cast) : Polytope<S>::hull(cast));
   }
   return pieces;
 }
@@ -166,6 +166,7 @@ std::vector<WorldBody> buildBodies(const Scene& scene, double duration, const Me
           mass.centerOfMass = Eigen::Vector3d::Zero();
         }
         std::vector<Eigen::Vector3d> all;
+        body.source.meshPrisms = spec.isStatic && !hull;  // polygonPieces
         for (const auto& piece : found->second.second.pieces) {
           std::vector<Eigen::Vector3d> points;
           for (const auto& p : piece) points.push_back(p - centerOfMass);

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace gjkx {
@@ -37,6 +38,16 @@ struct ConvexHull {
 /// leaves an input point outside a boundary plane by more than round-off throws,
 /// never returns.
 ConvexHull convexHull3d(const std::vector<Eigen::Vector3d>& points, const char* field = "polytope.points");
+
+/// The hull of a triangular prism: `points` are a triangle a, b, c and its copy a', b', c'
+/// moved off its plane (a static mesh's piece at the polygonal level, §6). Its faces are
+/// known, so no Qhull call is needed (the torso's plant has 8,640 such pieces): all six
+/// points in input order, the two triangles, and each side quad split along its convex
+/// diagonal; every corner is checked to lie on or below every face, as convexHull3d checks
+/// Qhull's. Nothing (std::nullopt) when the points are no prism to within round-off (a
+/// triangle with no area, a copy near its plane): Polytope::prism then asks convexHull3d.
+/// Throws std::invalid_argument naming `field` for a non-finite point or other than 6 points.
+std::optional<ConvexHull> prismHull(const std::vector<Eigen::Vector3d>& points, const char* field = "polytope.points");
 
 /// The convex hull of points in the plane z = 0 (Qhull in 2D), a convex polygon whose
 /// vertices are in counter-clockwise order, each adjacent to the next. Throws

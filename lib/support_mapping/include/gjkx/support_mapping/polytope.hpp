@@ -34,6 +34,15 @@ class Polytope {
     return Polytope(convexHull3d(toDouble(points), "polytope.points"));
   }
 
+  /// The hull of a triangular prism (convex_hull.hpp's prismHull): a triangle's three
+  /// points and their copies moved off its plane, in that order; no Qhull call. Points that
+  /// are no prism to within round-off get Qhull's hull (`hull`), and its errors.
+  static Polytope prism(const std::vector<Vector3<S>>& points) {
+    const std::vector<Eigen::Vector3d> exact = toDouble(points);
+    const std::optional<ConvexHull> known = prismHull(exact, "polytope.points");
+    return Polytope(known ? *known : convexHull3d(exact, "polytope.points"));
+  }
+
   /// The convex polygon spanned by points in the plane z = 0, for the paper's 2D
   /// figures (a 2D set is a 3D set in the plane z = 0). Throws std::invalid_argument
   /// ("polygon.points: ...") for a non-finite point, z != 0, fewer than 3 points or a line.

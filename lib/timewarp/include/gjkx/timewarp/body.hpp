@@ -38,6 +38,9 @@ struct PieceSource {
   ShapeSpec convex;
   /// A mesh body: each piece's points (the hull of each is the piece). Empty for a convex body.
   std::vector<std::vector<Eigen::Vector3d>> meshPieces;
+  /// True if each mesh piece is a triangle and its copy moved off its plane (a static mesh
+  /// met at the polygonal level): its hull is known (Polytope::prism), no Qhull call.
+  bool meshPrisms = false;
   /// True for a mesh body (its pieces are held in a 14-DOP hierarchy by the narrow phase).
   bool isMesh() const { return !meshPieces.empty(); }
 };
