@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
     const ConvexDecomposition d = decompose(mesh);
     const Bvh<double> body(d.polytopes<double>());
     double size = 0;
-    for (const auto& node : body.nodes()) size = std::max(size, node.hull.boundingRadius());
+    for (const auto& node : body.nodes()) size = std::max(size, node.hull->boundingRadius());
     std::printf("\n== %s: %zu triangles, %d convex pieces (HACD%s), volume excess %.1f%%, BVH of %zu nodes, height %d ==\n",
                 name.c_str(), mesh.triangles.size(), d.report.pieces, d.report.fromCache ? ", cached" : "",
                 100 * d.report.volumeExcess, body.nodes().size(), body.height());

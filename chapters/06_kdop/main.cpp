@@ -179,7 +179,7 @@ void hierarchyFigure(const std::string& out, const Subject& s) {
       if (!(n.depth == depth || (n.isLeaf() && n.depth < depth))) continue;
       // The node's 14-DOP in the figure's frame: of its hull, turned upright.
       std::vector<V> points;
-      for (const auto& v : n.hull.vertices()) points.push_back(upright(v));
+      for (const auto& v : n.hull->vertices()) points.push_back(upright(v));
       const Polytope<double> solid = kdopSolid(kdopOf(Polytope<double>::hull(points)));
       canvas.mesh(Mesh{solid.vertices(), solid.triangles()},
                   MeshStyle{pieceColor(colour, 0.22), Stroke{pieceColor(colour).withAlpha(1.0), 1.4}, true, true});
@@ -325,7 +325,7 @@ void frontFigure(const std::string& out, const Subject& s, int frames, double sp
   number(0);
   const int leaves = next;
   double size = 0;
-  for (const auto& n : bvh.nodes()) size = std::max(size, n.hull.boundingRadius());
+  for (const auto& n : bvh.nodes()) size = std::max(size, n.hull->boundingRadius());
   const Motion<double> ma = Motion<double>::screw(Pose<double>::identity(), {0, 0, 0}, {0, 0, spin});
   const Motion<double> mb = Motion<double>::screw(Pose<double>::translate({-1.2 * size, 0.3 * size, 0}), {1.2 * size, 0, 0},
                                                   {0.3, 0.5, 0});

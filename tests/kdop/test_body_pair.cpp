@@ -19,7 +19,7 @@ namespace {
 // A random nonconvex body: `count` random convex pieces (hulls of 12 points in a ball of
 // radius 0.2..0.5) scattered in a ball of radius 2, overlapping like a decomposition's.
 template <typename S>
-Bvh<S> randomBody(std::mt19937& rng, int count) {
+Bvh<S> randomBody(std::mt19937& rng, int count, InnerHulls inner = InnerHulls::every) {
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Polytope<S>> pieces;
   for (int i = 0; i < count; ++i) {
@@ -29,7 +29,7 @@ Bvh<S> randomBody(std::mt19937& rng, int count) {
     for (int k = 0; k < 12; ++k) points.push_back(centre + Vector3<S>(S(size * u(rng)), S(size * u(rng)), S(size * u(rng))));
     pieces.push_back(Polytope<S>::hull(points));
   }
-  return Bvh<S>(pieces);
+  return Bvh<S>(pieces, inner);
 }
 
 template <typename S>
@@ -84,6 +84,31 @@ TEMPLATE_TEST_CASE("interval query: the BVH returns exactly the pairs of the all
     const auto out = survivingPiecePairs(a, ma, b, mb, S(0), S(0.5));
     REQUIRE(out.pairs == bruteForcePiecePairs(a, ma, b, mb, S(0), S(0.5)));
   }
+}
+
+// A hierarchy whose inner nodes keep no hull (a static body's, InnerHulls::none) takes
+// each inner node's slab ends from its children: the same pairs as the all-pairs test, at
+// one pose and over intervals, turning or not, against a body with or without inner hulls.
+TEMPLATE_TEST_CASE("inner nodes without hulls: the BVH still returns exactly the pairs of the all-pairs test",
+                   "[kdop][body_pair]", float, double) {
+  using S = TestType;
+  std::mt19937 rng(4242);
+  int kept = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Bvh<S> a = randomBody<S>(rng, 16, InnerHulls::none);
+    const Bvh<S> b = randomBody<S>(rng, 9, trial % 3 == 0 ? InnerHulls::none : InnerHulls::every);
+    CHECK_FALSE(a.node(Bvh<S>::root()).hasHull());
+    const Pose<S> pa = randomPose<S>(rng, 2), pb = randomPose<S>(rng, 3);
+    BodyPairQuery<S> still(a, b);
+    const auto atPose = still.queryAt(pa, pb);
+    REQUIRE(atPose.pairs == bruteForcePiecePairs(a, Motion<S>::fixed(pa), b, Motion<S>::fixed(pb), S(0), S(0)));
+    const Motion<S> ma = trial % 2 == 1 ? Motion<S>::fixed(pa) : Motion<S>::screw(pa, randomVector<S>(rng, 2), randomVector<S>(rng, 2));
+    const Motion<S> mb = Motion<S>::constantAcceleration(pb, randomVector<S>(rng, 2), randomVector<S>(rng, 5));
+    const auto over = survivingPiecePairs(a, ma, b, mb, S(0), S(0.5));
+    REQUIRE(over.pairs == bruteForcePiecePairs(a, ma, b, mb, S(0), S(0.5)));
+    kept += int(atPose.pairs.size() + over.pairs.size());
+  }
+  CHECK(kept > 100);
 }
 
 // Three bodies, each with one 14-DOP cache (BodyKdops) shared by its two pairs, as the

@@ -156,8 +156,8 @@ TEST_CASE("the BVH is balanced by the median split: 16 pieces, 31 nodes, 5 level
   // Every inner node's hull holds its children's vertices: its 14-DOP holds theirs.
   for (const auto& node : bvh.nodes()) {
     if (node.isLeaf()) continue;
-    const auto parent = kdopOf(node.hull);
-    CHECK(parent.contains(kdopOf(bvh.node(node.left).hull)));
-    CHECK(parent.contains(kdopOf(bvh.node(node.right).hull)));
+    const auto parent = kdopOf(*node.hull);
+    CHECK(parent.contains(kdopOf(*bvh.node(node.left).hull)));
+    CHECK(parent.contains(kdopOf(*bvh.node(node.right).hull)));
   }
 }

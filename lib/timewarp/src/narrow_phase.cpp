@@ -38,7 +38,9 @@ NarrowPhase<S>::NarrowPhase(const std::vector<WorldBody>& bodies) {
     if (!bodies[b].source.isMesh()) continue;
     std::vector<Polytope<S>> polytopes;
     for (const Shape<S>& piece : piecesOf(bodies, int(b))) polytopes.push_back(std::get<Polytope<S>>(piece.variant()));
-    bvh_[b] = std::make_shared<const Bvh<S>>(std::move(polytopes));
+    // A static body's 14-DOPs are needed at one pose: its inner nodes need no hull (bvh.hpp).
+    bvh_[b] = std::make_shared<const Bvh<S>>(std::move(polytopes),
+                                             bodies[b].rigid.isStatic() ? InnerHulls::none : InnerHulls::every);
   }
 }
 

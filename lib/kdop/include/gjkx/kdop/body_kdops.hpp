@@ -42,7 +42,12 @@ class BodyKdops {
         epochOf_(bvh.nodes().size(), {0, 0}),
         hints_(bvh.nodes().size()) {
     for (auto& hint : hints_) hint.fill(0);
-    for (const auto& node : bvh.nodes()) radius_.push_back(node.hull.boundingRadius());
+    // Children come after their parent: a node without a hull takes its children's radius.
+    radius_.resize(bvh.nodes().size());
+    for (int i = int(bvh.nodes().size()) - 1; i >= 0; --i) {
+      const BvhNode<S>& node = bvh.node(i);
+      radius_[i] = node.hasHull() ? node.hull->boundingRadius() : std::max(radius_[node.left], radius_[node.right]);
+    }
   }
 
   /// The hierarchy.
@@ -113,20 +118,34 @@ class BodyKdops {
     }
     const bool upper = side % 2 == 0;
     const int slot = 14 * b + side;
-    known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
     const BvhNode<S>& node = bvh_->node(i);
+    if (!node.hasHull()) {
+      // No hull (InnerHulls::none): the support of a union is the larger of its parts', so
+      // the end is the children's extreme, exactly as they are computed (each kept for later).
+      const S l = valueIn(node.left, k, side, b), r = valueIn(node.right, k, side, b);
+      values_[i][slot] = upper ? std::max(l, r) : std::min(l, r);
+      known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
+      return values_[i][slot];
+    }
+    known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
     const Vector3<S>& d = bank_[b].frame.direction[k];
     const Vector3<S> direction = upper ? d : Vector3<S>(-d);
     // After a large turn (`freshStart`), last time's vertex is far from the answer: the
     // climb starts from the node's table instead (a few steps from anywhere).
     if (bank_[b].freshStart) hints_[i][slot] = node.startFor(direction);
-    S v = d.dot(node.hull.support(direction, hints_[i][slot])) + bank_[b].frame.offset[k];
+    S v = d.dot(node.hull->support(direction, hints_[i][slot])) + bank_[b].frame.offset[k];
     if (!node.isLeaf()) {
       const S pad = S(64) * machineEpsilon<S>() * (S(2) * radius_[i] + bank_[b].reach);
       v += upper ? pad : -pad;
     }
     values_[i][slot] = v;
     return v;
+  }
+
+  // Slab end `side` of node i in bank b: kept, or computed now.
+  S valueIn(int i, int k, int side, int b) {
+    if (epochOf_[i][b] == bank_[b].epoch && (known_[i][b] & (1u << side))) return values_[i][14 * b + side];
+    return compute(i, k, side, b);
   }
 
   /// The slab ends of all nodes at one pose, valid for nodes whose epoch matches.

@@ -16,7 +16,8 @@
 /// and of similar size, where a surface-area heuristic, made for rays and skewed
 /// primitive sizes, buys little; and the build is a few `nth_element` calls plus one
 /// Qhull hull per node, of its two children's hull vertices. Bottom-up merging would give
-/// tighter nodes at a quadratic cost.
+/// tighter nodes at a quadratic cost. A static body's hierarchy keeps no inner hulls
+/// (`InnerHulls::none`): at its one pose, an inner node's 14-DOP is its children's.
 #pragma once
 
 #include <gjkx/kdop/kdop.hpp>
@@ -25,6 +26,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,8 +36,10 @@ namespace gjkx {
 /// A node of the hierarchy.
 template <typename S>
 struct BvhNode {
-  /// The convex hull of the node's pieces (for a leaf: the piece itself).
-  Polytope<S> hull;
+  /// The convex hull of the node's pieces (for a leaf: the piece itself). None for an inner
+  /// node of a hierarchy built with `InnerHulls::none` (a static body's): its 14-DOP is its
+  /// children's, slab by slab (`BodyKdops`).
+  std::optional<Polytope<S>> hull;
   /// Children (indices into `Bvh::nodes`), -1 for a leaf.
   int left = -1;
   /// See `left`.
@@ -46,8 +50,10 @@ struct BvhNode {
   int parent = -1;
   /// Depth below the root (the root is 0).
   int depth = 0;
-  /// The largest distance of a hull vertex from the hull's centre: the node's size, which
-  /// decides which side of a node pair a traversal opens (the larger one).
+  /// The centre of the node's hull (without one: its first leaf's).
+  Vector3<S> centre = Vector3<S>::Zero();
+  /// The largest distance of a hull vertex from `centre` (without a hull: a bound on it):
+  /// the node's size, which decides which side of a node pair a traversal opens (the larger).
   S size = S(0);
   /// Where hill climbing starts for a direction with no useful hint: for each of the 26
   /// directions \f$(i, j, k) \in \{-1, 0, 1\}^3\f$ (index \f$9(i+1) + 3(j+1) + (k+1)\f$), the hull's
@@ -55,6 +61,8 @@ struct BvhNode {
   std::array<int, 27> startVertex{};
   /// True for a leaf.
   bool isLeaf() const { return piece >= 0; }
+  /// True if the node keeps its hull (every leaf does).
+  bool hasHull() const { return hull.has_value(); }
   /// A good first vertex for a climb along `d`: the supporting vertex of the nearest of the
   /// 26 directions (each component of d rounded to -1, 0 or 1 relative to the largest,
   /// at \f$\tan 22.5^\circ\f$). The climb then takes a few steps, not a walk across the hull.
@@ -64,6 +72,17 @@ struct BvhNode {
     for (int i = 0; i < 3; ++i) index = 3 * index + (d[i] > m ? 2 : (d[i] < -m ? 0 : 1));
     return startVertex[index];
   }
+};
+
+/// Whether a hierarchy's inner nodes keep the hull of their pieces (a Qhull call each).
+/// A 14-DOP needs no hull: the support of a union is the larger of its parts' supports, so
+/// an inner node's slab ends are its children's extremes, exact at any pose. The hull makes
+/// them one climb each instead of a walk down to the leaves, which pays for a body that
+/// moves (new poses at every query) and not for a static one, whose ends are computed once:
+/// the torso's plant, a prism per triangle, has one inner node fewer than it has triangles.
+enum class InnerHulls {
+  every,  ///< each inner node keeps its hull (a moving body)
+  none    ///< no inner node keeps one (a static body)
 };
 
 /// The hierarchy of one body's convex pieces, in the body frame. Shared by every body
@@ -77,7 +96,8 @@ class Bvh {
   /// Builds the hierarchy of `pieces` (top-down, median split). Throws
   /// std::invalid_argument ("bvh.pieces: ...") for an empty list, or for a mix of solid
   /// pieces and polygons (a body is either solid or flat, in the plane z = 0).
-  explicit Bvh(std::vector<Polytope<S>> pieces) : pieces_(std::move(pieces)) {
+  explicit Bvh(std::vector<Polytope<S>> pieces, InnerHulls inner = InnerHulls::every)
+      : pieces_(std::move(pieces)), inner_(inner) {
     if (pieces_.empty()) throw std::invalid_argument("bvh.pieces: a body needs at least one convex piece");
     for (const auto& piece : pieces_)
       if (piece.planar() != pieces_.front().planar())
@@ -131,30 +151,40 @@ class Bvh {
     });
     const int left = build(order, first, middle, index, depth + 1);
     const int right = build(order, middle, last, index, depth + 1);
-    // The hull of the pieces is the hull of the children's hulls: only their vertices are
-    // handed to the hull (a static mesh of 8,640 prisms would give the root 51,840 points).
-    std::vector<Vector3<S>> points = nodes_[left].hull.vertices();
-    const auto& more = nodes_[right].hull.vertices();
-    points.insert(points.end(), more.begin(), more.end());
-    // Pieces in the plane z = 0 (a 2D figure's bodies) have a polygon as their hull.
     BvhNode<S>& node = nodes_[index];
-    node.hull = pieces_[order[first]].planar() ? Polytope<S>::polygon(points) : Polytope<S>::hull(points);
     node.left = left;
     node.right = right;
+    if (inner_ == InnerHulls::none) {
+      // No hull: the node's size bounds its pieces' distance from its first leaf's centre.
+      node.hull.reset();
+      node.centre = nodes_[left].centre;
+      node.size = std::max(nodes_[left].size, (nodes_[right].centre - node.centre).norm() + nodes_[right].size);
+      return index;
+    }
+    // The hull of the pieces is the hull of the children's hulls: only their vertices are
+    // handed to the hull (a static mesh of 8,640 prisms would give the root 51,840 points).
+    std::vector<Vector3<S>> points = nodes_[left].hull->vertices();
+    const auto& more = nodes_[right].hull->vertices();
+    points.insert(points.end(), more.begin(), more.end());
+    // Pieces in the plane z = 0 (a 2D figure's bodies) have a polygon as their hull.
+    node.hull = pieces_[order[first]].planar() ? Polytope<S>::polygon(points) : Polytope<S>::hull(points);
     finish(node);
     return index;
   }
 
-  /// The node's size and its climbs' starting vertices, from its hull.
+  /// The node's centre, size and its climbs' starting vertices, from its hull.
   static void finish(BvhNode<S>& node) {
-    for (const auto& v : node.hull.vertices()) node.size = std::max(node.size, (v - node.hull.center()).norm());
+    const Polytope<S>& hull = *node.hull;
+    node.centre = hull.center();
+    for (const auto& v : hull.vertices()) node.size = std::max(node.size, (v - hull.center()).norm());
     for (int i = 0; i < 27; ++i) {
       const Vector3<S> d(S(i / 9 - 1), S(i / 3 % 3 - 1), S(i % 3 - 1));
-      node.startVertex[i] = i == 13 ? 0 : node.hull.supportIndexLinearScan(d);
+      node.startVertex[i] = i == 13 ? 0 : hull.supportIndexLinearScan(d);
     }
   }
 
   std::vector<Polytope<S>> pieces_;
+  InnerHulls inner_;
   std::vector<BvhNode<S>> nodes_;
 };
 
