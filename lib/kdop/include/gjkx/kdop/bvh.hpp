@@ -50,7 +50,7 @@ struct BvhNode {
   int parent = -1;
   /// Depth below the root (the root is 0).
   int depth = 0;
-  /// The centre of the node's hull (without one: its first leaf's).
+  /// The centre of the node's hull (without one: of the sphere holding its children's).
   Vector3<S> centre = Vector3<S>::Zero();
   /// The largest distance of a hull vertex from `centre` (without a hull: a bound on it):
   /// the node's size, which decides which side of a node pair a traversal opens (the larger).
@@ -93,7 +93,8 @@ class Bvh {
   /// The scalar type.
   using Scalar = S;
 
-  /// Builds the hierarchy of `pieces` (top-down, median split). Throws
+  /// Builds the hierarchy of `pieces` (top-down, median split), its inner nodes with their
+  /// hulls or without (`inner`: InnerHulls::none for a static body). Throws
   /// std::invalid_argument ("bvh.pieces: ...") for an empty list, or for a mix of solid
   /// pieces and polygons (a body is either solid or flat, in the plane z = 0).
   explicit Bvh(std::vector<Polytope<S>> pieces, InnerHulls inner = InnerHulls::every)
@@ -155,10 +156,21 @@ class Bvh {
     node.left = left;
     node.right = right;
     if (inner_ == InnerHulls::none) {
-      // No hull: the node's size bounds its pieces' distance from its first leaf's centre.
+      // No hull: the node's centre and size are the least sphere holding its children's
+      // spheres (each a centre and a size), which bounds its pieces as the hull's would.
       node.hull.reset();
-      node.centre = nodes_[left].centre;
-      node.size = std::max(nodes_[left].size, (nodes_[right].centre - node.centre).norm() + nodes_[right].size);
+      const BvhNode<S>&a = nodes_[left], &b = nodes_[right];
+      const S apart = (b.centre - a.centre).norm();
+      if (apart + b.size <= a.size || !(apart > S(0))) {
+        node.centre = a.centre;
+        node.size = std::max(a.size, b.size);
+      } else if (apart + a.size <= b.size) {
+        node.centre = b.centre;
+        node.size = b.size;
+      } else {
+        node.size = (apart + a.size + b.size) / S(2);
+        node.centre = a.centre + (node.size - a.size) / apart * (b.centre - a.centre);
+      }
       return index;
     }
     // The hull of the pieces is the hull of the children's hulls: only their vertices are
