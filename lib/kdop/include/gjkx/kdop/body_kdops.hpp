@@ -118,16 +118,14 @@ class BodyKdops {
     }
     const bool upper = side % 2 == 0;
     const int slot = 14 * b + side;
+    known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
     const BvhNode<S>& node = bvh_->node(i);
     if (!node.hasHull()) {
       // No hull (InnerHulls::none): the support of a union is the larger of its parts', so
       // the end is the children's extreme, exactly as they are computed (each kept for later).
       const S l = valueIn(node.left, k, side, b), r = valueIn(node.right, k, side, b);
-      values_[i][slot] = upper ? std::max(l, r) : std::min(l, r);
-      known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
-      return values_[i][slot];
+      return values_[i][slot] = upper ? std::max(l, r) : std::min(l, r);
     }
-    known_[i][b] = static_cast<std::uint16_t>(known_[i][b] | (1u << side));
     const Vector3<S>& d = bank_[b].frame.direction[k];
     const Vector3<S> direction = upper ? d : Vector3<S>(-d);
     // After a large turn (`freshStart`), last time's vertex is far from the answer: the
