@@ -29,13 +29,18 @@
 // default) and take no coefficient of restitution: the runner keeps MuJoCo's defaults, so a
 // body does not bounce as the scene's restitution says. The rest is MuJoCo's defaults too:
 // the semi-implicit Euler integrator, pyramidal friction cones, the Newton solver, no margin.
+// --integrator implicit takes MuJoCo's implicit integrator instead (implicit in velocity,
+// the gyroscopic terms included), its remedy for a body that spins up: Euler integrates a
+// free body's gyroscopic torque explicitly, and a light body with unequal principal moments
+// spinning fast gains energy at every step until its accelerations blow up.
 //
 // The step. MuJoCo's default time step is 2 ms (its documentation's advice for stable
 // contact), so the runner takes a whole number of steps per frame of at most 2 ms
 // (21 a frame at 24 frames a second). MuJoCo has no continuous collision detection.
 //
 // MuJoCo resets a simulation whose accelerations blow up (mjWARN_BADQACC) to its start; the
-// runner stops there with exit status 1 and says when, rather than measure a run restarted.
+// runner stops there with exit status 1 and says when, and which body, with its speed and
+// spin before the step, rather than measure a run restarted.
 //
 // The contacts. MuJoCo 2.2 allocates its contact and constraint buffers once (the MJCF
 // <size nconmax njmax>): the runner sizes them from the scene (--max-contacts, by default
@@ -126,7 +131,8 @@ std::string geomsOf(const gjkx::Scene& scene, std::size_t index, const gjkx::Wor
 }
 
 /// The MJCF model of the scene (see the file's head); fills `out` with each body's place.
-std::string modelXml(const peer_run::PeerScene& loaded, double step, int maxContacts, std::vector<MuJoCoBody>& out) {
+std::string modelXml(const peer_run::PeerScene& loaded, double step, const std::string& integrator, int maxContacts,
+                     std::vector<MuJoCoBody>& out) {
   const gjkx::Scene& scene = loaded.scene;
   std::string assets, world;
   out.assign(loaded.bodies.size(), MuJoCoBody{});
@@ -152,7 +158,7 @@ std::string modelXml(const peer_run::PeerScene& loaded, double step, int maxCont
   }
   const Eigen::Vector3d& g = scene.gravity;
   // Four constraint rows a contact (a pyramidal cone of condim 3).
-  return "<mujoco model=\"gjkx scene\">\n<compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n<option timestep=\"" +
+  return "<mujoco model=\"gjkx scene\">\n<compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n<option integrator=\"" + integrator + "\" timestep=\"" +
          numbers({step}) + "\" gravity=\"" + numbers({g.x(), g.y(), g.z()}) + "\"/>\n<size nconmax=\"" +
          std::to_string(maxContacts) + "\" njmax=\"" + std::to_string(4 * maxContacts) + "\"/>\n<asset>\n" + assets +
          "</asset>\n<worldbody>\n" + world + "</worldbody>\n</mujoco>\n";
@@ -172,7 +178,12 @@ int main(int argc, char** argv) {
                "gjkx_mujoco_scene"};
   peer_run::CommandLine options;
   int maxContacts = 0;
+  std::string integrator = "euler";
   options.addTo(app, "enough for steps of at most 2 ms");
+  app.add_option("--integrator", integrator,
+                 "MuJoCo's integrator: euler (semi-implicit, its default) or implicit (in velocity, the gyroscopic "
+                 "terms included)")
+      ->check(CLI::IsMember({"euler", "implicit"}));
   app.add_option("--max-contacts", maxContacts,
                  "MuJoCo's contact buffer (nconmax; default: 10 per moving body, at least 500)")
       ->check(CLI::Range(1, 1000000));
@@ -187,7 +198,7 @@ int main(int argc, char** argv) {
     maxContacts = std::max(500, 10 * moving);
   }
   std::vector<MuJoCoBody> place;
-  const std::string xml = modelXml(loaded, loaded.frameDt / substeps, maxContacts, place);
+  const std::string xml = modelXml(loaded, loaded.frameDt / substeps, integrator == "euler" ? "Euler" : "implicit", maxContacts, place);
   std::filesystem::create_directories(options.out);
   const std::string modelPath = options.out + "/model.xml";
   if (!(std::ofstream(modelPath) << xml)) {
@@ -241,19 +252,36 @@ int main(int argc, char** argv) {
     mjtNum* v = d->qvel + place[b].dofAddress;
     for (int k = 0; k < 3; ++k) v[k] = start.velocity[k], v[3 + k] = spin[k];
   }
+  // What the runner says when MuJoCo's accelerations blew up in the step from `time`: the
+  // body of the degree of freedom MuJoCo names (its warning's info), with its mass and its
+  // speed and spin before the step.
+  std::vector<mjtNum> velocities;
+  const auto blowUp = [&](double time) {
+    std::string what;
+    const int dof = d->warning[mjWARN_BADQACC].lastinfo;
+    if (dof >= 0 && dof < m->nv && m->dof_bodyid[dof] >= 1) {
+      const int b = m->dof_bodyid[dof] - 1;  // (MuJoCo's body k + 1 is scene body k)
+      const mjtNum* v = velocities.data() + place[std::size_t(b)].dofAddress;
+      char text[200];
+      std::snprintf(text, sizeof text, " (%.3g kg; before the step %.3g m/s, spinning at %.3g rad/s)", m->body_mass[b + 1],
+                    Eigen::Vector3d(v[0], v[1], v[2]).norm(), Eigen::Vector3d(v[3], v[4], v[5]).norm());
+      what = " in body '" + loaded.bodies[std::size_t(b)].name + "'" + text;
+    }
+    return "MuJoCo found its simulation unstable (bad accelerations, mjWARN_BADQACC)" + what + " at t = " +
+           std::to_string(time) + " s and reset it to the start: the run stops here" +
+           (integrator == "euler" ? " (--integrator implicit integrates a spin's gyroscopic terms implicitly)" : "");
+  };
   peer_run::ContactPairs atEnd;
   bool atEndKnown = false;
   int mostContacts = 0, mostRows = 0;  // of a step: what the buffers had to hold
   peer.stepFrame = [&](peer_run::ContactPairs& pairs) {
     for (int s = 0; s < substeps; ++s) {
       const double before = d->time;
+      velocities.assign(d->qvel, d->qvel + m->nv);  // (the reset below clears them)
       mj_step(m, d);
       // MuJoCo resets a simulation whose accelerations became NaN, infinite or huge (its
       // mjWARN_BADQACC) back to the model's start: what follows would be a new run.
-      if (d->warning[mjWARN_BADQACC].number > 0)
-        throw std::runtime_error("MuJoCo found its simulation unstable (bad accelerations, mjWARN_BADQACC) at t = " +
-                                 std::to_string(before) +
-                                 " s and reset it to the start: the run stops here");
+      if (d->warning[mjWARN_BADQACC].number > 0) throw std::runtime_error(blowUp(before));
       contactPairs(m, d, pairs);  // the contacts the step found at its start and answered
       mostContacts = std::max(mostContacts, d->ncon);
       mostRows = std::max(mostRows, d->nefc);

@@ -21,7 +21,9 @@
 //   over the frames: a resting pile loses energy where contacts absorb its fall; a rise is
 //   energy the simulator made.
 // A program that fails is a row saying so, with its exit status and the last line it wrote
-// on standard error (each run's standard error is kept in its folder, stderr.txt). A bad command line exits 2,
+// on standard error (each run's standard error is kept in its folder, stderr.txt). Where
+// MuJoCo fails, a second row runs it again with its implicit integrator
+// (gjkx_mujoco_scene --integrator implicit), its remedy for accelerations that blow up. A bad command line exits 2,
 // a scene that cannot be read 1.
 #include "../command_line.hpp"
 #include "../formatting.hpp"
@@ -190,14 +192,20 @@ int main(int argc, char** argv) {
     const std::string a = argv[k];
     command += " " + (a.find(' ') == std::string::npos ? a : "\"" + a + "\"");
   }
-  // The simulators, each where it was built: the program, its extra options, its name.
+  // The simulators, each where it was built: the program, its extra options, its name, and
+  // the name of the run's folder. A run with `after` set is a second try, made only when
+  // the run of that name failed on the scene: MuJoCo with its implicit integrator, its
+  // remedy for a simulation whose accelerations blow up under its default (mujoco_scene.cpp).
   struct Simulator {
-    std::string program, options, name;
+    std::string program, options, name, folder, after;
   };
-  std::vector<Simulator> simulators = {{"gjkx_simulate", " --contact hybrid --checks", "gjkx (hybrid)"},
-                                       {"gjkx_bullet_scene", "", "Bullet"},
-                                       {"gjkx_mujoco_scene", "", "MuJoCo"},
-                                       {"gjkx_ode_scene", "", "ODE"}};
+  std::vector<Simulator> simulators = {
+      {"gjkx_simulate", " --contact hybrid --checks", "gjkx (hybrid)", "gjkx_simulate", ""},
+      {"gjkx_bullet_scene", "", "Bullet", "gjkx_bullet_scene", ""},
+      {"gjkx_mujoco_scene", "", "MuJoCo", "gjkx_mujoco_scene", ""},
+      {"gjkx_mujoco_scene", " --integrator implicit", "MuJoCo, implicit integrator", "gjkx_mujoco_scene-implicit",
+       "MuJoCo"},
+      {"gjkx_ode_scene", "", "ODE", "gjkx_ode_scene", ""}};
   const std::string loadBefore = loadAverage();
   std::vector<Row> rows;
   for (const std::string& item : scenes) {
@@ -219,7 +227,12 @@ int main(int argc, char** argv) {
     for (const Simulator& sim : simulators) {
       const std::string program = bin + "/" + sim.program;
       if (!std::filesystem::exists(program)) continue;
-      const std::string out = work + "/" + name + "-" + sim.program;
+      if (!sim.after.empty()) {
+        const auto first = std::find_if(rows.begin(), rows.end(),
+                                        [&](const Row& r) { return r.scene == name && r.simulator == sim.after; });
+        if (first == rows.end() || first->status == 0) continue;
+      }
+      const std::string out = work + "/" + name + "-" + sim.folder;
       Row row;
       row.scene = name;
       row.simulator = sim.name;

@@ -1,6 +1,7 @@
 // gjkx_peers_table as a user runs it (docs/08_torso.md, "The peers side by side"): a scene
 // whose label holds a space, in a work folder whose path holds one, is run by every
-// simulator that was built and written as rows of one table.
+// simulator that was built and written as rows of one table; where MuJoCo fails, a second
+// row runs it with its implicit integrator.
 #include <catch2/catch.hpp>
 
 #include "../run_program.hpp"
@@ -36,3 +37,30 @@ TEST_CASE("gjkx_peers_table runs a scene labelled with a space, in a folder with
         std::string::npos);
   fs::remove_all(dir);
 }
+
+#if GJKX_HAVE_MUJOCO_SCENE  // (a build without MuJoCo leaves this test out, as it does test_mujoco_scene)
+TEST_CASE("gjkx_peers_table runs MuJoCo again with its implicit integrator where it failed, and only there", "[peers]") {
+  const fs::path dir = test::freshFolder("gjkx-peers-table", "fallback");
+  // A thin rod spinning in free flight, on which MuJoCo's default integrator blows up
+  // (tests/peers/test_mujoco_scene.cpp), and the thin plate, on which it does not.
+  std::ofstream(dir / "rod.json") << R"({ "gravity": [0, 0, 0], "frame_rate": 24, "duration": 0.5,
+    "bodies": [ { "name": "rod", "shape": {"box": [0.05, 0.004, 0.002]}, "position": [0, 0, 0],
+                  "angular_velocity": [300, 40, 0], "density": 1500 } ] })";
+  const fs::path table = dir / "table.md";
+  const test::ProgramResult r = test::runProgram(
+      GJKX_PEERS_TABLE, "rod=" + (dir / "rod.json").string() + " plate=" + std::string(GJKX_THIN_PLATE) + " --work " +
+                            (dir / "work").string() + " --table " + table.string());
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const std::string made = test::readText(table);
+  INFO(made);
+  CHECK(made.find("| rod | MuJoCo | failed (exit status 1: gjkx_mujoco_scene: MuJoCo found its simulation unstable") !=
+        std::string::npos);
+  CHECK(made.find("| rod | MuJoCo, implicit integrator | 0.5 s |") != std::string::npos);
+  CHECK(made.find("--integrator implicit --out " + (dir / "work").string() + "/rod-gjkx_mujoco_scene-implicit") !=
+        std::string::npos);
+  CHECK(made.find("| plate | MuJoCo | 0.25 s |") != std::string::npos);
+  CHECK(made.find("| plate | MuJoCo, implicit integrator") == std::string::npos);
+  fs::remove_all(dir);
+}
+#endif
