@@ -20,11 +20,11 @@
 //
 //   RATIO LABEL_slowest_frame_spread=<that frame's largest time over the runs / its least>
 //
-// And what the slowest frame did: its events (collisions, step ends and stale hits taken
-// from the ordering, frames.csv's `events`), what each cost on average, and what each may
-// cost for the frame to run in real time (its length over its events); with the body pairs
-// checked again per event (after collisions and at step ends) and the time-of-impact
-// queries per event:
+// And what the slowest frame did: its events (the hits taken from the ordering's queue,
+// stale ones included, frames.csv's `events`; step ends are not among them), what each
+// cost on average, and what each may cost for the frame to run in real time (its length
+// over its events); with the body pairs checked again per event (after collisions and at
+// step ends) and the time-of-impact queries per event:
 //
 //   SLOWEST LABEL frame=K events=E cost_per_event_us=... real_time_per_event_us=...
 //           pairs_per_event=... queries_per_event=...

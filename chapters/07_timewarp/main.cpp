@@ -5,8 +5,8 @@
 // 2000) needs: every body runs ahead on its own local time, and a collision found late, at
 // t_c before the local times of its bodies, rolls back only those two bodies to t_c. Two
 // figures, drawn from the world's own trace (WorldSettings::trace) of a Newton's cradle in
-// space (five balls 2 cm apart, e = 1, no gravity, the first ball at 1 m/s), over three
-// frames of 1/24 s:
+// space (five balls, the first 3 cm from a row of four 2 cm apart, e = 1, no gravity, the
+// first ball at 1 m/s), over three frames of 1/24 s:
 //   fig-timewarp-spacetime.png  one row per ball, simulated time to the right: each ball's
 //       local time flown to the frame's end, the collisions (red) between the rows, the
 //       paths discarded by a rollback (grey, raised, with the arrow back to t_c) and the

@@ -3,8 +3,10 @@
 /// wall time went, and the trace of what the orderings did.
 ///
 /// A frame's report is the row of `frames.csv` that gjkx_simulate writes. Its counters are
-/// listed once, in `frameColumns()`, with their CSV names: the writer and every reader go
-/// through that table, so a new counter is one line there (and one member here).
+/// listed once, in `frameColumns()`, with their CSV names: the writer goes through that
+/// table, and the readers (gjkx_frame_ratios, chapters/08_torso/run_stats.hpp) look a
+/// column up by its name in the file's header. A new counter is one member here, one line
+/// in `operator+=` and one line at the end of that table.
 #pragma once
 
 #include <gjkx/verify/frame_verifier.hpp>
@@ -20,7 +22,7 @@ struct FrameCounters {
   long collisionChecks = 0;     ///< pair queries of the time-of-impact solver (or static tests)
   long collisions = 0;          ///< impulses applied (microcollisions included)
   long microcollisions = 0;     ///< of which microcollisions
-  long caught = 0;              ///< microcollisions that stopped a caught body (Zeno's wedge, response.hpp)
+  long caught = 0;              ///< bodies stopped as caught: Zeno's wedge, or too many collisions at one instant (response.hpp)
   long settled = 0;             ///< bodies put to sleep at the frame's end (sleep.hpp)
   long rollbacks = 0;           ///< collisions that rolled back bodies whose local time had run past t_c
   long bodiesRolledBack = 0;    ///< bodies rolled back (or, for the heap, advanced to the impact)
@@ -37,7 +39,7 @@ struct FrameCounters {
   long impulseCaps = 0;         ///< impulses whose integration reached ImpulseSettings::maxSteps (the impulse so far applied)
   long spinRestarts = 0;        ///< times the frame was run again in shorter intervals (a body spun past a half turn per interval)
   long eventCaps = 0;           ///< intervals whose events reached StepTuning's cap (FrameStatus::EventCap)
-  long projections = 0;         ///< overlapping pairs moved apart at a fixed step's end (fixed_step.hpp)
+  long projections = 0;         ///< fixed steps: overlapping pairs moved apart at a step's end (fixed_step.hpp); the hybrid: contact groups whose position projection moved a body (contact_solver.hpp)
   long contactPoints = 0;       ///< manifold points solved by the hybrid's contact solver (summed over intervals)
   long contactGroups = 0;       ///< contact groups solved (summed over intervals)
   long contactSweeps = 0;       ///< sweeps of the contact solver over its groups' points
@@ -47,7 +49,7 @@ struct FrameCounters {
   long staticChecks = 0;        ///< of collisionChecks, the time-of-impact queries of a piece against a static body's piece
   long contactImpulses = 0;     ///< hybrid: of collisions, impulses on a contact pair closing slower than the contact speed (no restitution; response.hpp)
   long cascadeImpulses = 0;     ///< of collisions, the instant pass's impulses after an event's own (on contacts its impulses set closing; response.hpp)
-  long stepEnds = 0;            ///< Timewarp under the hybrid: own steps that ended before the interval's end (the body flies on; timewarp.hpp)
+  long stepEnds = 0;            ///< Timewarp (either model of contact): own steps that ended before the interval's end (the body flies on; timewarp.hpp)
   long recheckedAfterCollisions = 0;  ///< Timewarp: body pairs checked again from t_c because a collision's impulses struck one of their bodies
   long recheckedAtStepEnds = 0;       ///< Timewarp: body pairs checked again at their bodies' step ends
   long checkedAtIntervalStarts = 0;   ///< Timewarp: body pairs checked at the starts of the frame's intervals (the broad phase's candidates)
