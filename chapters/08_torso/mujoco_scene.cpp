@@ -30,7 +30,7 @@
 // body does not bounce as the scene's restitution says. The rest is MuJoCo's defaults too:
 // the semi-implicit Euler integrator, pyramidal friction cones, the Newton solver, no margin.
 // --integrator implicit takes MuJoCo's implicit integrator instead (implicit in velocity,
-// the gyroscopic terms included), its remedy for a body that spins up: Euler integrates a
+// the gyroscopic terms included), for a scene where a body spins up: Euler integrates a
 // free body's gyroscopic torque explicitly, and a light body with unequal principal moments
 // spinning fast gains energy at every step until its accelerations blow up.
 //

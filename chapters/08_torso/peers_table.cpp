@@ -23,7 +23,7 @@
 // A program that fails is a row saying so, with its exit status and the last line it wrote
 // on standard error (each run's standard error is kept in its folder, stderr.txt). Where
 // MuJoCo fails, a second row runs it again with its implicit integrator
-// (gjkx_mujoco_scene --integrator implicit), its remedy for accelerations that blow up. A bad command line exits 2,
+// (gjkx_mujoco_scene --integrator implicit), which takes a spin's gyroscopic terms into the step. A bad command line exits 2,
 // a scene that cannot be read 1.
 #include "../command_line.hpp"
 #include "../formatting.hpp"
@@ -194,8 +194,8 @@ int main(int argc, char** argv) {
   }
   // The simulators, each where it was built: the program, its extra options, its name, and
   // the name of the run's folder. A run with `after` set is a second try, made only when
-  // the run of that name failed on the scene: MuJoCo with its implicit integrator, its
-  // remedy for a simulation whose accelerations blow up under its default (mujoco_scene.cpp).
+  // the run of that name failed on the scene: MuJoCo with its implicit integrator, which
+  // takes a spin's gyroscopic terms into the step, where its default blew up (mujoco_scene.cpp).
   struct Simulator {
     std::string program, options, name, folder, after;
   };
