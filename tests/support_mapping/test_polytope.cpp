@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "shape_test_helpers.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -14,27 +16,14 @@
 #include <vector>
 
 using namespace gjkx;
+using gjkx::test::kPi;
+using gjkx::test::randomDirection;
+using gjkx::test::tol;
 using Catch::Matchers::Contains;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
 template <typename S>
 using Vec = Vector3<S>;
-
-template <typename S>
-S tol() {
-  return std::is_same_v<S, float> ? S(1e-5) : S(1e-12);
-}
-
-template <typename S>
-Vec<S> randomDirection(std::mt19937& rng) {
-  std::normal_distribution<S> n(S(0), S(1));
-  Vec<S> s;
-  do s = Vec<S>(n(rng), n(rng), n(rng));
-  while (s.norm() < S(1e-3));
-  return s;
-}
 
 // n random points on the unit sphere: every one of them is a hull vertex.
 template <typename S>

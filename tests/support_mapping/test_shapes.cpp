@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "shape_test_helpers.hpp"
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -16,19 +18,14 @@
 #include <vector>
 
 using namespace gjkx;
+using gjkx::test::kPi;
+using gjkx::test::randomDirection;
+using gjkx::test::tol;
 using Catch::Matchers::Contains;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
 template <typename S>
 using Vec = Vector3<S>;
-
-// Tolerance for coordinates of size ~10: tight in double, looser in float.
-template <typename S>
-S tol() {
-  return std::is_same_v<S, float> ? S(1e-5) : S(1e-12);
-}
 
 template <typename S>
 bool near(const Vec<S>& a, const Vec<S>& b, S scale = S(1)) {
@@ -39,15 +36,6 @@ bool near(const Vec<S>& a, const Vec<S>& b, S scale = S(1)) {
 template <typename S>
 std::vector<Vec<S>> axisDirections() {
   return {Vec<S>(1, 0, 0), Vec<S>(-1, 0, 0), Vec<S>(0, 1, 0), Vec<S>(0, -1, 0), Vec<S>(0, 0, 1), Vec<S>(0, 0, -1)};
-}
-
-template <typename S>
-Vec<S> randomDirection(std::mt19937& rng) {
-  std::normal_distribution<S> n(S(0), S(1));
-  Vec<S> s;
-  do s = Vec<S>(n(rng), n(rng), n(rng));
-  while (s.norm() < S(1e-3));
-  return s;
 }
 
 template <typename S>
