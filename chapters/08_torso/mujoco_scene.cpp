@@ -130,7 +130,8 @@ std::string geomsOf(const gjkx::Scene& scene, std::size_t index, const gjkx::Wor
   return geoms;
 }
 
-/// The MJCF model of the scene (see the file's head); fills `out` with each body's place.
+/// The MJCF model of the scene (see the file's head), with `integrator` "euler" or
+/// "implicit" (--integrator); fills `out` with each body's place.
 std::string modelXml(const peer_run::PeerScene& loaded, double step, const std::string& integrator, int maxContacts,
                      std::vector<MuJoCoBody>& out) {
   const gjkx::Scene& scene = loaded.scene;
@@ -158,8 +159,9 @@ std::string modelXml(const peer_run::PeerScene& loaded, double step, const std::
   }
   const Eigen::Vector3d& g = scene.gravity;
   // Four constraint rows a contact (a pyramidal cone of condim 3).
-  return "<mujoco model=\"gjkx scene\">\n<compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n<option integrator=\"" + integrator + "\" timestep=\"" +
-         numbers({step}) + "\" gravity=\"" + numbers({g.x(), g.y(), g.z()}) + "\"/>\n<size nconmax=\"" +
+  const std::string mjcfIntegrator = integrator == "euler" ? "Euler" : "implicit";  // (MJCF's spelling)
+  return "<mujoco model=\"gjkx scene\">\n<compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n<option integrator=\"" +
+         mjcfIntegrator + "\" timestep=\"" + numbers({step}) + "\" gravity=\"" + numbers({g.x(), g.y(), g.z()}) + "\"/>\n<size nconmax=\"" +
          std::to_string(maxContacts) + "\" njmax=\"" + std::to_string(4 * maxContacts) + "\"/>\n<asset>\n" + assets +
          "</asset>\n<worldbody>\n" + world + "</worldbody>\n</mujoco>\n";
 }
@@ -198,7 +200,7 @@ int main(int argc, char** argv) {
     maxContacts = std::max(500, 10 * moving);
   }
   std::vector<MuJoCoBody> place;
-  const std::string xml = modelXml(loaded, loaded.frameDt / substeps, integrator == "euler" ? "Euler" : "implicit", maxContacts, place);
+  const std::string xml = modelXml(loaded, loaded.frameDt / substeps, integrator, maxContacts, place);
   std::filesystem::create_directories(options.out);
   const std::string modelPath = options.out + "/model.xml";
   if (!(std::ofstream(modelPath) << xml)) {
@@ -263,8 +265,9 @@ int main(int argc, char** argv) {
       const int b = m->dof_bodyid[dof] - 1;  // (MuJoCo's body k + 1 is scene body k)
       const mjtNum* v = velocities.data() + place[std::size_t(b)].dofAddress;
       char text[200];
-      std::snprintf(text, sizeof text, " (%.3g kg; before the step %.3g m/s, spinning at %.3g rad/s)", m->body_mass[b + 1],
-                    Eigen::Vector3d(v[0], v[1], v[2]).norm(), Eigen::Vector3d(v[3], v[4], v[5]).norm());
+      std::snprintf(text, sizeof text, " (%.3g kg; before the step %.3g m/s, spinning at %.3g rad/s)",
+                    m->body_mass[b + 1], Eigen::Vector3d(v[0], v[1], v[2]).norm(),
+                    Eigen::Vector3d(v[3], v[4], v[5]).norm());
       what = " in body '" + loaded.bodies[std::size_t(b)].name + "'" + text;
     }
     return "MuJoCo found its simulation unstable (bad accelerations, mjWARN_BADQACC)" + what + " at t = " +

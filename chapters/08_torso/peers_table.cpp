@@ -23,8 +23,8 @@
 // A program that fails is a row saying so, with its exit status and the last line it wrote
 // on standard error (each run's standard error is kept in its folder, stderr.txt). Where
 // MuJoCo fails, a second row runs it again with its implicit integrator
-// (gjkx_mujoco_scene --integrator implicit), which takes a spin's gyroscopic terms into the step. A bad command line exits 2,
-// a scene that cannot be read 1.
+// (gjkx_mujoco_scene --integrator implicit), which takes a spin's gyroscopic terms into the
+// step. A bad command line exits 2, a scene that cannot be read 1.
 #include "../command_line.hpp"
 #include "../formatting.hpp"
 #include "peer_run.hpp"
