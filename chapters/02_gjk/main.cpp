@@ -140,17 +140,6 @@ void drawMinkowski(Canvas& canvas, const Polytope<double>& QminusP, const GjkIte
   }
 }
 
-// How iteration i ended, as the trace's last column names it.
-const char* stepName(GjkStep step) {
-  switch (step) {
-    case GjkStep::Continue: return "continue";
-    case GjkStep::Converged: return "converged";
-    case GjkStep::Overlap: return "overlap";
-    case GjkStep::SeparatingVector: return "separating-vector";
-  }
-  return "?";
-}
-
 // The run as a table (--trace): per iteration i, s_i, S_P(s_i), S_Q(-s_i), the supporting
 // distance SD (§2.3), the kept simplex as V_P and V_Q, z and the Minkowski distance MD = |z|.
 void printTrace(const GjkTrace<double>& trace, const GjkResult<double>& result) {
@@ -165,7 +154,7 @@ void printTrace(const GjkTrace<double>& trace, const GjkResult<double>& result) 
     }
     table.rows.push_back({std::to_string(it.i), pointCell(it.s), pointCell(it.supportP), pointCell(it.supportQ),
                           fixed(it.supportingDistance, 6), vp, vq, pointCell(it.z), fixed(it.minkowskiDistance, 6),
-                          stepName(it.step)});
+                          toString(it.step)});
   }
   table.print();
   std::printf("result: %s after %d iterations, distance %.6f\n\n", toString(result.status), result.iterations,

@@ -192,6 +192,21 @@ TEST_CASE("bodies within the tolerance at t0 are colliding at start", "[extrusio
   CHECK(extrusionTest(P, apart, 0.0, 1.0, settings).status == ExtrusionStatus::NoCollision);
 }
 
+TEST_CASE("touching bodies on which GJK stalls are not declared free of contact (fuzz finding)", "[extrusion][stall]") {
+  // The needle slab of tests/gjk/test_gjk_stalled.cpp, at rest: a triangle 1.4e6 long and
+  // 1e-4 thick touching a segment at a shared vertex. GJK at t0 stalls at 1e-4, above the
+  // tolerance, with its lower bound below 0: no vector separates, so the test cannot say
+  // "no collision", and it says that its distance at t0 is only an upper bound.
+  using V = Vector3<double>;
+  const auto P = fixedAt(Triangle<double>(V(0, 0, 0), V(-1e6, 0, -1e6), V(2.775e-4, 1e-4, 2.775e-4)), V(0, 0, 0));
+  const auto Q = fixedAt(Segment<double>(V(-5e5, 0, 0), V(0, 0, 0)), V(0, 0, 0));
+  const auto r = extrusionTest(P, Q, 0.0, 1.0);
+  INFO(toString(r.status) << ", GJK " << toString(r.gjkStatus) << " at " << r.distanceAtStart);
+  CHECK(r.status != ExtrusionStatus::NoCollision);
+  CHECK(r.gjkStatus == GjkStatus::Stalled);
+  CHECK(r.distanceAtStart >= 0.0);
+}
+
 // The certified margin m = Δ²/8 (D_P + D_Q), with D = a + α r + ω² r (certified_margin.hpp),
 // is what the result reports: for a screw motion D = ω² r (r: the bounding radius about
 // the body origin); for linear motion and per-vertex linear motion it is 0; the paper's

@@ -88,6 +88,21 @@ TEMPLATE_TEST_CASE("the static test: disjoint, intersecting, and within the coll
   CHECK(intersect(P, at(S(4) * tol)).status == IntersectionStatus::Disjoint);      // farther than it
 }
 
+TEST_CASE("the static test on touching bodies where GJK stalls: intersecting, as §2.3 argues", "[sd][static][stall]") {
+  // §2.3: "If the GJK algorithm finds a local minimum for the Minkowski distance and halts
+  // before a separating vector can be found, then such a vector provably doesn't exist".
+  // The needle slab of tests/gjk/test_gjk_stalled.cpp (a triangle 1.4e6 long and 1e-4
+  // thick touching a segment at a shared vertex) makes GJK halt so, with its distance 1e-4
+  // far above the tolerance: the boolean query still answers intersecting.
+  using V = Vector3<double>;
+  const Triangle<double> P(V(0, 0, 0), V(-1e6, 0, -1e6), V(2.775e-4, 1e-4, 2.775e-4));
+  const Segment<double> Q(V(-5e5, 0, 0), V(0, 0, 0));
+  REQUIRE(gjk(P, Q).status == GjkStatus::Stalled);
+  const IntersectionResult<double> r = intersect(P, Q);
+  CHECK(r.status == IntersectionStatus::Intersecting);
+  CHECK(r.supportingDistance <= defaultCollisionTolerance<double>());
+}
+
 // The supporting distance and the static test, step by step, on Fig. 2's scene (P the
 // quadrilateral (0,0) (5,0) (6,6) (0,5), Q the pentagon (11,3) (12,3) (14,5) (9,9) (10,5)):
 //  s_0 = (0, -1): S_P(s_0) is P's lowest vertex, s_0 . (0,0) = 0 (a tie with (5,0));

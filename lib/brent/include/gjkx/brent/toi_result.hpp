@@ -216,6 +216,9 @@ struct ToiResult {
   /// comment), at most the tolerance plus what the bodies move in one time tolerance, or
   /// in one spacing of the caller's times near \f$t_0\f$ where that is coarser (see `timeOfImpact`).
   S distance = S(0);
+  /// True when GJK stalled at `time` (`GjkStatus::Stalled`): `distance` is then only an upper
+  /// bound of the closest distance there (the contact within the tolerance still holds).
+  bool distanceIsUpperBound = false;
   /// Unit contact normal at `time`, from P towards Q.
   Vector3<S> normal = Vector3<S>::Zero();
   /// The closest point of P at `time`.

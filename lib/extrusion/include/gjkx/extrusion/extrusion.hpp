@@ -133,8 +133,13 @@ struct ExtrusionResult {
   ExtrusionStatus status = ExtrusionStatus::IterationCap;
   /// The vector that separates at both ends (unit), when `NoCollision`.
   Vector3<S> separatingVector = Vector3<S>::Zero();
-  /// The closest distance at \f$t_0\f$ (GJK's distance; an upper bound if GJK stopped early).
+  /// The closest distance at \f$t_0\f$ (GJK's distance; an upper bound if GJK stopped early
+  /// or stalled, see `gjkStatus`).
   S distanceAtStart = std::numeric_limits<S>::infinity();
+  /// How GJK at \f$t_0\f$ ended: `Separated` or `Overlapping` when `distanceAtStart` is the
+  /// closest distance, `Stalled` when it is only an upper bound (gjk.hpp), `StoppedByVisitor`
+  /// when a vector separating at both ends stopped it.
+  GjkStatus gjkStatus = GjkStatus::IterationCap;
   /// The closest point of P at \f$t_0\f$ (GJK's witness).
   Vector3<S> witnessP = Vector3<S>::Zero();
   /// The closest point of Q at \f$t_0\f$ (GJK's witness).
@@ -264,6 +269,7 @@ ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P
   const GjkResult<S> run = gjk(P0, Q0, settings.gjk, gjkCache, atEachIteration);
   result.gjkIterations = run.iterations;
   result.distanceAtStart = run.distance;
+  result.gjkStatus = run.status;
   result.witnessP = run.witnessP;
   result.witnessQ = run.witnessQ;
 
@@ -274,6 +280,7 @@ ExtrusionResult<typename PlacedP0::Scalar> extrusionTestPlaced(const PlacedP0& P
   } else if (run.status == GjkStatus::IterationCap) {
     result.status = ExtrusionStatus::IterationCap;
   } else if (run.status == GjkStatus::Overlapping || run.distance <= settings.collisionTolerance) {
+    // (A stalled run's distance is an upper bound: at most the tolerance, it proves the contact too.)
     result.status = ExtrusionStatus::CollidingAtStart;
   } else {
     result.status = ExtrusionStatus::Undecided;

@@ -16,12 +16,14 @@
 namespace gjkx {
 
 /// How a GJK run ended. Only `Separated` and `Overlapping` are answers about the
-/// distance; the iteration cap and a numerical failure are said as such, never as
-/// "no collision".
+/// distance; a stall, the iteration cap and a numerical failure are said as such, never
+/// as "no collision".
 enum class GjkStatus {
   Separated,         ///< converged: `distance` is the closest distance, within the tolerance
   SeparatingVector,  ///< boolean query: stopped at the first \f$\vec{s}_i\f$ with \f$SD > \f$ `separationThreshold`
   Overlapping,       ///< the origin is in \f$V_Q - V_P\f$ (up to round-off): P and Q intersect or touch
+  Stalled,           ///< the distance stopped decreasing with the gap \f$MD - SD\f$ still open: the closest
+                     ///< distance is only bracketed, between `lowerBound` and `distance` (beyond §2.2)
   IterationCap,      ///< `maxIterations` ran out; `distance` is only an upper bound
   StoppedByVisitor,  ///< the per-iteration visitor asked to stop
   NumericalFailure,  ///< a support mapping returned a point that is not finite
@@ -33,6 +35,7 @@ inline const char* toString(GjkStatus status) {
     case GjkStatus::Separated: return "separated";
     case GjkStatus::SeparatingVector: return "separating-vector";
     case GjkStatus::Overlapping: return "overlapping";
+    case GjkStatus::Stalled: return "stalled";
     case GjkStatus::IterationCap: return "iteration-cap";
     case GjkStatus::StoppedByVisitor: return "stopped-by-visitor";
     case GjkStatus::NumericalFailure: return "numerical-failure";
@@ -255,6 +258,25 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
     return mdNew <= md + gjkTieAllowance<S>() * std::sqrt(largestW2(x));
   };
 
+  // "No decrease" is the paper's stopping rule. It ends most runs with the gap between the
+  // bounds closed, not all; GJK has then not converged, the closest distance is only
+  // bracketed between the largest SD seen and MD, and the run says `Stalled`, not
+  // `Separated`. It happens two ways, which GJK cannot tell apart:
+  // - near a contact, z is known to about epsilon of the simplex's size, so its direction
+  //   is off by about that over |z|; MD falls only with the square of that angle, SD with
+  //   the angle itself, so SD stays below MD when MD stops falling (in float, boxes resting
+  //   a collision tolerance apart: MD right to round-off, SD 1e-4 below it);
+  // - on a V_Q - V_P with a face of ties along z far wider than the distance (a slab 2e-5
+  //   thick and 1e6 wide), z's components along the face pick a far vertex whose exact
+  //   progress, ~1e-26, is below what |z| resolves, and the vertex that would close the
+  //   gap is never the support: MD is then wrong (there, the bodies touch).
+  // The gap counts as open beyond the tolerance and the round-off of the bounds' values
+  // (both computed from the w, to about epsilon of max |w_k|).
+  auto gapOpen = [&](const Simplex<S>& x, const Vector3<S>& w) {
+    const S size = std::sqrt(std::max(largestW2(x), w.squaredNorm()));
+    return md - result.lowerBound > settings.relativeTolerance * md + gjkTieAllowance<S>() * size;
+  };
+
   for (int i = 0; i < settings.maxIterations; ++i) {
     result.iterations = i + 1;
     const SimplexVertex<S> v = detail::supportPair(P, Q, s, hintP, hintQ);
@@ -318,7 +340,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
         step = GjkStep::Overlap;
       } else if (!(mdNew < md) && !isTie(simplex, v.w, mdNew)) {
         simplex.assignUsed(before);  // "until this distance no longer decreases": keep the better simplex
-        step = GjkStep::Converged;
+        step = gapOpen(before, v.w) ? GjkStep::Stalled : GjkStep::Converged;
       } else {
         // A decrease, or a tie within round-off with w kept in the new simplex. Near the
         // end the distance falls as the square of z's angle to the optimum (|z| cos θ), so
@@ -351,6 +373,7 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
     switch (step) {
       case GjkStep::SeparatingVector: finish(GjkStatus::SeparatingVector); return result;
       case GjkStep::Converged: finish(GjkStatus::Separated); return result;
+      case GjkStep::Stalled: finish(GjkStatus::Stalled); return result;
       case GjkStep::Overlap: finish(GjkStatus::Overlapping); return result;
       case GjkStep::Continue: break;
     }
@@ -414,8 +437,8 @@ GjkResult<typename ShapeP::Scalar> gjkOnCores(const ShapeP& P, const ShapeQ& Q, 
   result.lowerBound -= r;
   if (result.status == GjkStatus::Overlapping || result.status == GjkStatus::NumericalFailure) return result;
   const S dCore = result.distance;
-  if (!(dCore > r)) {  // the balls about the cores' closest points overlap
-    if (result.status == GjkStatus::Separated) {
+  if (!(dCore > r)) {  // the balls about the cores' closest points overlap (a stalled dCore is an upper bound)
+    if (result.status == GjkStatus::Separated || result.status == GjkStatus::Stalled) {
       result.status = GjkStatus::Overlapping;
       result.z = Vector3<S>::Zero();
     }

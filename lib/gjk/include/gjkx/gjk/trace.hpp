@@ -14,7 +14,20 @@ enum class GjkStep {
   Converged,           ///< the new support point brought no progress: z is the closest point
   Overlap,             ///< the origin lies in the simplex (or within round-off of it)
   SeparatingVector,    ///< \f$SD(\vec{s}_i)\f$ exceeded the separation threshold (boolean query)
+  Stalled,             ///< no progress, but the gap \f$MD - SD\f$ is still open: the distance is only bracketed
 };
+
+/// The name of a step, for messages and trace tables.
+inline const char* toString(GjkStep step) {
+  switch (step) {
+    case GjkStep::Continue: return "continue";
+    case GjkStep::Converged: return "converged";
+    case GjkStep::Overlap: return "overlap";
+    case GjkStep::SeparatingVector: return "separating-vector";
+    case GjkStep::Stalled: return "stalled";
+  }
+  return "?";
+}
 
 /// One iteration i of GJK, as Fig. 2 draws it.
 template <typename S>

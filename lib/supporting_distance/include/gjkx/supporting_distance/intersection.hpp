@@ -76,6 +76,7 @@ IntersectionResult<typename ShapeP::Scalar> intersect(const ShapeP& P, const Sha
   switch (run.status) {
     case GjkStatus::SeparatingVector: out.status = IntersectionStatus::Disjoint; break;
     case GjkStatus::Separated:  // converged below the tolerance: within it, hence colliding
+    case GjkStatus::Stalled:    // "halts before a separating vector can be found": no SD above the tolerance
     case GjkStatus::Overlapping: out.status = IntersectionStatus::Intersecting; break;
     case GjkStatus::NumericalFailure: out.status = IntersectionStatus::NumericalFailure; break;
     case GjkStatus::IterationCap: out.status = IntersectionStatus::IterationCap; break;
