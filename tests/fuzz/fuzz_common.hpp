@@ -291,6 +291,32 @@ Body<S> decodeBody(Decoder& in, const Interval<S>& interval) {
   return moving(shape, decodeMotion<S>(in, interval));
 }
 
+/// What the moving-pair targets (extrusion, time of impact) decode first, in this order:
+/// the interval, the bodies P and Q, the extrusion variant and a collision tolerance.
+template <typename S>
+struct MovingPair {
+  Interval<S> interval;
+  Body<S> P, Q;
+  ExtrusionVariant variant;
+  double tolerance;  ///< 0: the settings' default
+  /// Sets the variant and the tolerance of an extrusion or time-of-impact query.
+  template <typename Settings>
+  void configure(Settings& settings) const {
+    settings.variant = variant;
+    if (tolerance > 0) settings.collisionTolerance = S(tolerance);
+  }
+};
+template <typename S>
+MovingPair<S> decodeMovingPair(Decoder& in) {
+  const Interval<S> interval = decodeInterval<S>(in);
+  Body<S> P = decodeBody<S>(in, interval);
+  Body<S> Q = decodeBody<S>(in, interval);
+  const ExtrusionVariant variant = in.flag() ? ExtrusionVariant::Certified : ExtrusionVariant::Paper;
+  static constexpr double tolerances[] = {0, 1e-2, 1e-6, 1.0};
+  const double tolerance = tolerances[in.pick(4)];
+  return {interval, std::move(P), std::move(Q), variant, tolerance};
+}
+
 template <typename S>
 S accelerationBound(const Body<S>& body) {
   return std::visit([](const auto& b) { return S(b.accelerationBound()); }, body);

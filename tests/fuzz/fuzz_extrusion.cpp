@@ -24,14 +24,12 @@ inline Real cloudSd(const Cloud& a, const Cloud& b, const RVec& s) {
 
 template <typename S>
 void run(Decoder& in) {
-  const Interval<S> interval = decodeInterval<S>(in);
-  const S t0 = interval.t0, t1 = interval.t1;
-  const Body<S> P = decodeBody<S>(in, interval);
-  const Body<S> Q = decodeBody<S>(in, interval);
+  const MovingPair<S> pair = decodeMovingPair<S>(in);
+  const S t0 = pair.interval.t0, t1 = pair.interval.t1;
+  const Body<S>& P = pair.P;
+  const Body<S>& Q = pair.Q;
   ExtrusionSettings<S> settings;
-  settings.variant = in.flag() ? ExtrusionVariant::Certified : ExtrusionVariant::Paper;
-  static constexpr double tolerances[] = {0, 1e-2, 1e-6, 1.0};
-  if (const double tol = tolerances[in.pick(4)]; tol > 0) settings.collisionTolerance = S(tol);
+  pair.configure(settings);
   const Real tol = Real(settings.collisionTolerance);
 
   const ExtrusionResult<S> r = std::visit(

@@ -23,32 +23,32 @@ namespace gjkx {
 
 namespace detail {
 
-/// The contact data of a GJK run `run` at `time` (the closest distance, or an upper bound of
-/// it where GJK stalled, the witness points and the unit normal from P towards Q), into `result`, moved back to the world from the frame
-/// whose origin is at `origin`.
+/// The contact data at `time`, from the GJK run that ended with `status` there: the closest
+/// distance (an upper bound of it where GJK stalled), the witness points and the unit normal
+/// from P towards Q, into `result`. GJK ran in the query's frame, whose origin is at
+/// `origin` in the world: the witnesses move back there.
 template <typename S>
-void takeContact(ToiResult<S>& result, S time, const GjkResult<S>& run, const Vector3<S>& origin) {
+void takeContact(ToiResult<S>& result, S time, GjkStatus status, S distance, const Vector3<S>& witnessP,
+                 const Vector3<S>& witnessQ, const Vector3<S>& origin) {
   result.time = time;
-  result.distance = run.distance;
-  result.distanceIsUpperBound = run.status == GjkStatus::Stalled;
-  result.witnessP = run.witnessP + origin;
-  result.witnessQ = run.witnessQ + origin;
-  const Vector3<S> z = run.witnessQ - run.witnessP;
+  result.distance = distance;
+  result.distanceIsUpperBound = status == GjkStatus::Stalled;
+  result.witnessP = witnessP + origin;
+  result.witnessQ = witnessQ + origin;
+  const Vector3<S> z = witnessQ - witnessP;
   result.normal = z.norm() > S(0) ? Vector3<S>(z.normalized()) : Vector3<S>::Zero();
 }
 
-/// The contact data of the complete test `test` at its start `time` (the closest distance, or
-/// an upper bound of it where GJK stalled, the witness points and the unit normal from P towards Q), into `result`. The test ran in
-/// the query's frame, whose origin is at `origin` in the world: the witnesses move back there.
+/// The contact data of a GJK run `run` at `time`.
+template <typename S>
+void takeContact(ToiResult<S>& result, S time, const GjkResult<S>& run, const Vector3<S>& origin) {
+  takeContact(result, time, run.status, run.distance, run.witnessP, run.witnessQ, origin);
+}
+
+/// The contact data of the complete test `test` at its start `time` (its GJK run's there).
 template <typename S>
 void takeContact(ToiResult<S>& result, S time, const ExtrusionResult<S>& test, const Vector3<S>& origin) {
-  result.time = time;
-  result.distance = test.distanceAtStart;
-  result.distanceIsUpperBound = test.gjkStatus == GjkStatus::Stalled;
-  result.witnessP = test.witnessP + origin;
-  result.witnessQ = test.witnessQ + origin;
-  const Vector3<S> z = test.witnessQ - test.witnessP;
-  result.normal = z.norm() > S(0) ? Vector3<S>(z.normalized()) : Vector3<S>::Zero();
+  takeContact(result, time, test.gjkStatus, test.distanceAtStart, test.witnessP, test.witnessQ, origin);
 }
 
 /// One query of the time-of-impact solver of §5, one step of the paragraph a member (see
