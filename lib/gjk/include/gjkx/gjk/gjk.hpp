@@ -22,8 +22,7 @@ enum class GjkStatus {
   Separated,         ///< converged: `distance` is the closest distance, within the tolerance
   SeparatingVector,  ///< boolean query: stopped at the first \f$\vec{s}_i\f$ with \f$SD > \f$ `separationThreshold`
   Overlapping,       ///< the origin is in \f$V_Q - V_P\f$ (up to round-off): P and Q intersect or touch
-  Stalled,           ///< the distance stopped decreasing with the gap \f$MD - SD\f$ still open: the closest
-                     ///< distance is only bracketed, between `lowerBound` and `distance` (beyond §2.2)
+  Stalled,           ///< no progress, the gap \f$MD - SD\f$ open: the distance is between `lowerBound` and `distance`
   IterationCap,      ///< `maxIterations` ran out; `distance` is only an upper bound
   StoppedByVisitor,  ///< the per-iteration visitor asked to stop
   NumericalFailure,  ///< a support mapping returned a point that is not finite
@@ -131,9 +130,7 @@ SimplexVertex<S> supportPair(const P& shapeP, const Q& shapeQ, const Vector3<S>&
   v.hintQ = hintQ;
   return v;
 }
-}  // namespace detail
 
-namespace detail {
 /// The warm boolean query's first step, lean (§2.3 with §2.2's temporal coherence).
 ///
 /// A boolean query stops at the first \f$\vec{s}_i\f$ whose supporting distance
@@ -258,20 +255,13 @@ GjkResult<typename ShapeP::Scalar> gjkRun(const ShapeP& P, const ShapeQ& Q, cons
     return mdNew <= md + gjkTieAllowance<S>() * std::sqrt(largestW2(x));
   };
 
-  // "No decrease" is the paper's stopping rule. It ends most runs with the gap between the
-  // bounds closed, not all; GJK has then not converged, the closest distance is only
-  // bracketed between the largest SD seen and MD, and the run says `Stalled`, not
-  // `Separated`. It happens two ways, which GJK cannot tell apart:
-  // - near a contact, z is known to about epsilon of the simplex's size, so its direction
-  //   is off by about that over |z|; MD falls only with the square of that angle, SD with
-  //   the angle itself, so SD stays below MD when MD stops falling (in float, boxes resting
-  //   a collision tolerance apart: MD right to round-off, SD 1e-4 below it);
-  // - on a V_Q - V_P with a face of ties along z far wider than the distance (a slab 2e-5
-  //   thick and 1e6 wide), z's components along the face pick a far vertex whose exact
-  //   progress, ~1e-26, is below what |z| resolves, and the vertex that would close the
-  //   gap is never the support: MD is then wrong (there, the bodies touch).
-  // The gap counts as open beyond the tolerance and the round-off of the bounds' values
-  // (both computed from the w, to about epsilon of max |w_k|).
+  // "No decrease" (the paper's stop) may leave the gap MD - SD open: the distance is then
+  // only bracketed, and the run says `Stalled`. Near a contact z's direction is known only
+  // to round-off, and SD lags MD (it falls with the angle, MD with its square); where
+  // V_Q - V_P has a face of ties along z far wider than the distance (a slab 2e-5 thick,
+  // 1e6 wide), z picks a far vertex whose progress is below what |z| resolves, and MD is
+  // wrong. GJK cannot tell the two apart. Open: beyond the tolerance and the round-off of
+  // the bounds' values (epsilon of max |w_k|, as for ties).
   auto gapOpen = [&](const Simplex<S>& x, const Vector3<S>& w) {
     const S size = std::sqrt(std::max(largestW2(x), w.squaredNorm()));
     return md - result.lowerBound > settings.relativeTolerance * md + gjkTieAllowance<S>() * size;
