@@ -6,6 +6,8 @@
 // when the plane normal to s separates P and Q; GJK's first direction is s_0 = c_Q - c_P
 // (centre of P to centre of Q), then s_{i+1} = z. A unit box has half extents 1/2, and
 // its support in direction s is the corner in the octant of s (+1/2 on a zero component).
+#include "../gjk/needle_slab.hpp"
+
 #include <gjkx/extrusion/certified_margin.hpp>
 #include <gjkx/extrusion/extrusion.hpp>
 #include <gjkx/extrusion/static_sampling.hpp>
@@ -193,13 +195,12 @@ TEST_CASE("bodies within the tolerance at t0 are colliding at start", "[extrusio
 }
 
 TEST_CASE("touching bodies on which GJK stalls are not declared free of contact (fuzz finding)", "[extrusion][stall]") {
-  // The needle slab of tests/gjk/test_gjk_stalled.cpp, at rest: a triangle 1.4e6 long and
-  // 1e-4 thick touching a segment at a shared vertex. GJK at t0 stalls at 1e-4, above the
+  // The needle slab (tests/gjk/needle_slab.hpp), at rest: a triangle 1.4e6 long and 1e-4
+  // thick touching a segment at a shared vertex. GJK at t0 stalls at 1e-4, above the
   // tolerance, with its lower bound below 0: no vector separates, so the test cannot say
   // "no collision", and it says that its distance at t0 is only an upper bound.
-  using V = Vector3<double>;
-  const auto P = fixedAt(Triangle<double>(V(0, 0, 0), V(-1e6, 0, -1e6), V(2.775e-4, 1e-4, 2.775e-4)), V(0, 0, 0));
-  const auto Q = fixedAt(Segment<double>(V(-5e5, 0, 0), V(0, 0, 0)), V(0, 0, 0));
+  const auto P = fixedAt(test::needle(1e6, 1e-4), Vector3<double>::Zero());
+  const auto Q = fixedAt(test::segmentTo(1e6, 0.5), Vector3<double>::Zero());
   const auto r = extrusionTest(P, Q, 0.0, 1.0);
   INFO(toString(r.status) << ", GJK " << toString(r.gjkStatus) << " at " << r.distanceAtStart);
   CHECK(r.status != ExtrusionStatus::NoCollision);

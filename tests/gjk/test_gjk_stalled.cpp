@@ -10,23 +10,21 @@
 // every vertex of the top face ties along z but for z's tiny components along the face,
 // which pick a far vertex; the vertex at the origin, which would close the gap, is never
 // the support, and the far vertex's exact progress is far below what |z| resolves.
+#include "needle_slab.hpp"
+
 #include <gjkx/gjk/gjk.hpp>
-#include <gjkx/support_mapping/primitives.hpp>
 
 #include <catch2/catch.hpp>
 
-#include <vector>
+#include <string>
 
 using namespace gjkx;
+using gjkx::test::needle;
+using gjkx::test::segmentTo;
 
 namespace {
 
 using V = Vector3<double>;
-
-// The needle triangle, L long and h thick (its apex h above the segment's line), and the
-// segment from (-f L, 0, 0) to the shared vertex, the origin.
-Triangle<double> needle(double L, double h) { return {V(0, 0, 0), V(-L, 0, -L), V(2.775 * h, h, 2.775 * h)}; }
-Segment<double> segmentTo(double L, double f) { return {V(-f * L, 0, 0), V(0, 0, 0)}; }
 
 // What a run may answer on touching shapes: the contact, or a stall whose bounds hold it.
 template <typename Result>

@@ -92,17 +92,14 @@ TEST_CASE("gjkx_mujoco_scene refuses a bad command line (2) and a bad scene (1)"
   CHECK(bad.output.find("shape.sphere") != std::string::npos);
 }
 
-// A thin rod (10 cm by 8 mm by 4 mm) spinning at 300 rad/s about an axis near its long one,
-// with no gravity and nothing to touch: its energy is constant (Euler's equations without
+// A thin rod (10 cm by 8 mm by 4 mm, spinning_rod.json) spinning at 300 rad/s about an axis
+// near its long one, for 1 s, with no gravity and nothing to touch: its energy is constant (Euler's equations without
 // torque). MuJoCo's default semi-implicit Euler integrates the gyroscopic torque explicitly,
 // and the spin grows from step to step until MuJoCo resets the run; its implicit integrator
 // takes the gyroscopic terms into the step and does not make energy.
 TEST_CASE("a thin rod spinning in MuJoCo: its default integrator blows up and the runner names the body, its implicit one holds", "[peers]") {
   const fs::path out = test::freshFolder("gjkx-mujoco", "spin");
-  std::ofstream(out / "rod.json") << R"({ "gravity": [0, 0, 0], "frame_rate": 24, "duration": 1.0,
-    "bodies": [ { "name": "rod", "shape": {"box": [0.05, 0.004, 0.002]}, "position": [0, 0, 0],
-                  "angular_velocity": [300, 40, 0], "density": 1500 } ] })";
-  const std::string rod = "\"" + (out / "rod.json").string() + "\" --quiet --out \"";
+  const std::string rod = "\"" + std::string(GJKX_SPINNING_ROD) + "\" --quiet --out \"";
   const test::ProgramResult euler = run(rod + (out / "euler").string() + "\"");
   INFO(euler.output);
   CHECK(euler.status == 1);

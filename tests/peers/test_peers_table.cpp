@@ -42,14 +42,12 @@ TEST_CASE("gjkx_peers_table runs a scene labelled with a space, in a folder with
 TEST_CASE("gjkx_peers_table runs MuJoCo again with its implicit integrator where it failed, and only there", "[peers]") {
   const fs::path dir = test::freshFolder("gjkx-peers-table", "fallback");
   // A thin rod spinning in free flight, on which MuJoCo's default integrator blows up
-  // (tests/peers/test_mujoco_scene.cpp), and the thin plate, on which it does not.
-  std::ofstream(dir / "rod.json") << R"({ "gravity": [0, 0, 0], "frame_rate": 24, "duration": 0.5,
-    "bodies": [ { "name": "rod", "shape": {"box": [0.05, 0.004, 0.002]}, "position": [0, 0, 0],
-                  "angular_velocity": [300, 40, 0], "density": 1500 } ] })";
+  // (spinning_rod.json, tests/peers/test_mujoco_scene.cpp), and the thin plate, on which it
+  // does not; both cut to half a second.
   const fs::path table = dir / "table.md";
   const test::ProgramResult r = test::runProgram(
-      GJKX_PEERS_TABLE, "rod=" + (dir / "rod.json").string() + " plate=" + std::string(GJKX_THIN_PLATE) + " --work " +
-                            (dir / "work").string() + " --table " + table.string());
+      GJKX_PEERS_TABLE, "rod=" + std::string(GJKX_SPINNING_ROD) + " plate=" + std::string(GJKX_THIN_PLATE) +
+                            " --duration 0.5 --work " + (dir / "work").string() + " --table " + table.string());
   INFO(r.output);
   REQUIRE(r.status == 0);
   const std::string made = test::readText(table);
@@ -57,7 +55,7 @@ TEST_CASE("gjkx_peers_table runs MuJoCo again with its implicit integrator where
   CHECK(made.find("| rod | MuJoCo | failed (exit status 1: gjkx_mujoco_scene: MuJoCo found its simulation unstable") !=
         std::string::npos);
   CHECK(made.find("| rod | MuJoCo, implicit integrator | 0.5 s |") != std::string::npos);
-  CHECK(made.find("--integrator implicit --out " + (dir / "work").string() + "/rod-gjkx_mujoco_scene-implicit") !=
+  CHECK(made.find("--integrator implicit --duration 0.5 --out " + (dir / "work").string() + "/rod-gjkx_mujoco_scene-implicit") !=
         std::string::npos);
   CHECK(made.find("| plate | MuJoCo | 0.25 s |") != std::string::npos);
   CHECK(made.find("| plate | MuJoCo, implicit integrator") == std::string::npos);

@@ -1,4 +1,6 @@
 // The supporting distance SD(P, Q, s) and the static intersection test (§2.3, §4).
+#include "../gjk/needle_slab.hpp"
+
 #include <gjkx/supporting_distance/intersection.hpp>
 #include <gjkx/supporting_distance/supporting_distance.hpp>
 #include <gjkx/support_mapping/placed.hpp>
@@ -91,12 +93,11 @@ TEMPLATE_TEST_CASE("the static test: disjoint, intersecting, and within the coll
 TEST_CASE("the static test on touching bodies where GJK stalls: intersecting, as §2.3 argues", "[sd][static][stall]") {
   // §2.3: "If the GJK algorithm finds a local minimum for the Minkowski distance and halts
   // before a separating vector can be found, then such a vector provably doesn't exist".
-  // The needle slab of tests/gjk/test_gjk_stalled.cpp (a triangle 1.4e6 long and 1e-4
-  // thick touching a segment at a shared vertex) makes GJK halt so, with its distance 1e-4
-  // far above the tolerance: the boolean query still answers intersecting.
-  using V = Vector3<double>;
-  const Triangle<double> P(V(0, 0, 0), V(-1e6, 0, -1e6), V(2.775e-4, 1e-4, 2.775e-4));
-  const Segment<double> Q(V(-5e5, 0, 0), V(0, 0, 0));
+  // The needle slab (tests/gjk/needle_slab.hpp: a triangle 1.4e6 long and 1e-4 thick
+  // touching a segment at a shared vertex) makes GJK halt so, with its distance 1e-4 far
+  // above the tolerance: the boolean query still answers intersecting.
+  const Triangle<double> P = test::needle(1e6, 1e-4);
+  const Segment<double> Q = test::segmentTo(1e6, 0.5);
   REQUIRE(gjk(P, Q).status == GjkStatus::Stalled);
   const IntersectionResult<double> r = intersect(P, Q);
   CHECK(r.status == IntersectionStatus::Intersecting);
