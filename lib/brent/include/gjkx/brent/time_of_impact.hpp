@@ -36,7 +36,7 @@
 /// interpenetrate: a pass within the tolerance between \f$t_a\f$ and \f$t_x\f$ would then go
 /// unseen (a photo finish if the bodies are apart again at \f$t_x\f$), and a hit at \f$t_x\f$
 /// could come long after the bodies first came within the tolerance, for a slow grazing
-/// approach (both found by tests/brent/test_time_of_impact.cpp on grazing passes).
+/// approach (both found by tests/brent/test_time_of_impact_random.cpp on grazing passes).
 /// When Brent's bracket \f$[t_a, t_b]\f$ shrinks below the time tolerance, the time of impact is
 /// \f$t_b\f$ if the stored vectors still separate there (approximate maximum SD > 0) and the
 /// exact distance there is within the tolerance (the paper's criterion above), else the
