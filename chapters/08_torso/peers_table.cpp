@@ -19,7 +19,10 @@
 //   gravity's potential -m g.c of each centre of mass c, the masses our world gives the
 //   bodies) at the last frame less at the start, and its largest rise above the start
 //   over the frames: a resting pile loses energy where contacts absorb its fall; a rise is
-//   energy the simulator made.
+//   energy the simulator made;
+// - the slowest frame and the median frame: each frame's own wall time (as above) over the
+//   simulated time it covers, the largest (and which frame) and the median. Real time is 1:
+//   a run can be fast on the whole and still stall at one frame (a crash).
 // A program that fails is a row saying so, with its exit status and the last line it wrote
 // on standard error (each run's standard error is kept in its folder, stderr.txt). Where
 // MuJoCo fails, a second row runs it again with its implicit integrator
@@ -47,6 +50,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -60,6 +64,8 @@ struct Row {
   double penetration = 0;                ///< deepest penetration at a frame's end (m)
   long tunnelled = 0;                    ///< pairs tunnelled
   double energyDrift = 0, energyRise = 0;  ///< J: end less start; largest rise above the start
+  double slowest = 0, median = 0;        ///< a frame's wall time over its simulated time: the largest, the median
+  int slowestFrame = 0;                  ///< the frame of the largest
   bool reused = false;                   ///< read from an earlier run in WORK (--reuse), not run now
 };
 
@@ -93,6 +99,28 @@ void runCommand(const std::string& command, int& status) {
 /// The columns of frames.csv that every runner writes (gjkx_simulate's and the peers'), and
 /// this table reads.
 const std::vector<std::string> kFramesColumns = {"frame", "time", "wall_s", "max_penetration", "tunnelled", "checks_s"};
+
+/// Each frame's wall time over the simulated time it covers (frames.csv's `time` is its end;
+/// the first starts at 0), `wall[k]` the frame's wall seconds: {largest, its frame number, median}.
+std::tuple<double, int, double> frameRatios(const std::vector<double>& frame, const std::vector<double>& time,
+                                            const std::vector<double>& wall) {
+  std::vector<double> ratios;
+  double largest = 0, start = 0;
+  int which = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const double ratio = wall[k] / (time[k] - start);
+    start = time[k];
+    ratios.push_back(ratio);
+    if (ratio > largest) {
+      largest = ratio;
+      which = int(std::lround(frame[k]));
+    }
+  }
+  std::sort(ratios.begin(), ratios.end());
+  const std::size_t n = ratios.size();
+  const double median = n == 0 ? 0.0 : n % 2 == 1 ? ratios[n / 2] : 0.5 * (ratios[n / 2 - 1] + ratios[n / 2]);
+  return {largest, which, median};
+}
 
 /// A body's mechanical energy: kinetic plus gravity's potential of its centre of mass.
 double potential(const gjkx::WorldBody& body, const Eigen::Vector3d& centre, const Eigen::Vector3d& gravity) {
@@ -146,16 +174,18 @@ std::string table(const std::vector<Row>& rows, double duration, const std::stri
   using chapter::format;
   std::ostringstream md;
   md << "| scene | simulator | simulated | wall time per simulated second | deepest penetration | pairs tunnelled "
-        "| energy drift, end − start (largest rise) |\n| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+        "| energy drift, end − start (largest rise) | slowest frame over its simulated time | median frame over its "
+        "simulated time |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (const Row& r : rows) {
     md << "| " << r.scene << " | " << r.simulator << " | ";
     if (r.status != 0) {
-      md << "failed (exit status " << r.status << (r.reason.empty() ? "" : ": " + r.reason) << ") | | | | |\n";
+      md << "failed (exit status " << r.status << (r.reason.empty() ? "" : ": " + r.reason) << ") | | | | | | |\n";
       continue;
     }
     md << format("%.3g s", r.simulated) << " | " << format("%.3g s", r.wall / r.simulated) << " | "
        << format("%.3g mm", 1000 * r.penetration) << " | " << r.tunnelled << " | "
-       << format("%.4g J", r.energyDrift) << format(" (%.3g J)", r.energyRise) << " |\n";
+       << format("%.4g J", r.energyDrift) << format(" (%.3g J)", r.energyRise) << " | "
+       << format("%.3g", r.slowest) << " (frame " << r.slowestFrame << ") | " << format("%.3g", r.median) << " |\n";
   }
   const bool anyReused = std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.reused; });
   md << "\nOne run each, one after the other, on one core of a shared 2-core machine";
@@ -172,7 +202,8 @@ std::string table(const std::vector<Row>& rows, double duration, const std::stri
 
 int main(int argc, char** argv) {
   CLI::App app{"Runs gjkx (hybrid contact), Bullet, MuJoCo and ODE on the same scene files and writes one table of "
-               "wall time, penetration, tunnelling and energy drift by the same independent checks.",
+               "wall time (in all, and its slowest and median frame), penetration, tunnelling and energy drift by the same "
+               "independent checks.",
                "gjkx_peers_table"};
   std::vector<std::string> scenes;
   std::string work = "peers-runs", bin, tableOut;
@@ -270,6 +301,10 @@ int main(int argc, char** argv) {
           row.simulated = run.at("time").back();
           // gjkx_simulate's wall_s holds its checks; a peer's leaves them out.
           row.wall = sim.program == "gjkx_simulate" ? sum("wall_s") - sum("checks_s") : sum("wall_s");
+          std::vector<double> frameWall = run.at("wall_s");
+          if (sim.program == "gjkx_simulate")
+            for (std::size_t k = 0; k < frameWall.size(); ++k) frameWall[k] -= run.at("checks_s")[k];
+          std::tie(row.slowest, row.slowestFrame, row.median) = frameRatios(run.at("frame"), run.at("time"), frameWall);
           const std::vector<double>& depth = run.at("max_penetration");
           row.penetration = std::max(0.0, *std::max_element(depth.begin(), depth.end()));
           row.tunnelled = std::lround(sum("tunnelled"));

@@ -6,10 +6,13 @@
 
 #include "../run_program.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -30,6 +33,37 @@ TEST_CASE("gjkx_peers_table runs a scene labelled with a space, in a folder with
   CHECK(made.find("| thin plate | gjkx (hybrid) | 0.25 s |") != std::string::npos);
   CHECK(made.find("failed") == std::string::npos);
   CHECK(made.find("*earlier*") == std::string::npos);  // every run made by this call
+  // Its slowest frame, recomputed from the run's frames.csv: the largest of each frame's own
+  // wall time (less its checks) over the simulated time the frame covers.
+  {
+    std::ifstream in(dir / "work" / "thin plate-gjkx_simulate" / "frames.csv");
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    for (std::istringstream cells(line); std::getline(cells, line, ',');) header.push_back(line);
+    const auto column = [&](const std::string& name) {
+      return std::size_t(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    double largest = 0, start = 0;
+    int which = 0, frames = 0;
+    while (std::getline(in, line)) {
+      std::vector<double> row;
+      for (std::istringstream cells(line); std::getline(cells, line, ',');) row.push_back(std::stod(line));
+      const double ratio = (row[column("wall_s")] - row[column("checks_s")]) / (row[column("time")] - start);
+      start = row[column("time")];
+      ++frames;
+      if (ratio > largest) {
+        largest = ratio;
+        which = int(row[column("frame")]);
+      }
+    }
+    REQUIRE(frames == 6);  // 0.25 s at 24 frames a second
+    char cell[64];
+    std::snprintf(cell, sizeof cell, " | %.3g (frame %d) | ", largest, which);
+    INFO(made);
+    CHECK(made.find(cell) != std::string::npos);
+    CHECK(made.find("| slowest frame over its simulated time | median frame over its simulated time |") != std::string::npos);
+  }
   // Again with --reuse: the rows are read from those runs, and the table says so.
   const std::string reused = tableOf("--reuse ");
   CHECK(reused.find("| thin plate | gjkx (hybrid) | 0.25 s |") != std::string::npos);
