@@ -22,6 +22,11 @@
 //                           with §5 as the paper wrote it (gjkx_simulate --solver paper), from
 //                           the kept run figures/data/torso-run-paper/frames.csv
 //                           (--paper-run DIR); skipped without it.
+//   peers-torso-frames.png: the torso scene in every simulator of the peers table, frame by
+//                           frame: each frame's wall time over its simulated time, a line per
+//                           simulator, from figures/data/peers-frames.csv (gjkx_peers_table
+//                           --frames; --peers-frames FILE), drawn by gnuplot (peers_frames.gp);
+//                           skipped without it.
 // Options: --run DIR reads DIR/bodies.csv and DIR/frames.csv instead; --frames DIR writes one
 // PNG per frame of the run (an animation); --seed N and --reduced must match how the run's
 // scene was made. --stats [LABEL=]RUN... --table OUT.md draws nothing: it writes the table
@@ -33,6 +38,7 @@
 
 #include <gjkx/render/canvas.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -53,6 +59,12 @@ using torso::V3;
 #endif
 #ifndef GJKX_TORSO_RUN_PAPER  // the same scene with §5 as the paper wrote it (Fig. 6 reproduced)
 #define GJKX_TORSO_RUN_PAPER "figures/data/torso-run-paper"
+#endif
+#ifndef GJKX_PEERS_FRAMES  // every peer's frames on the peers table's scenes (gjkx_peers_table --frames)
+#define GJKX_PEERS_FRAMES "figures/data/peers-frames.csv"
+#endif
+#ifndef GJKX_PEERS_FRAMES_GP  // their figure's gnuplot script, beside this file
+#define GJKX_PEERS_FRAMES_GP "chapters/08_torso/peers_frames.gp"
 #endif
 #ifndef GJKX_TORSO_RUNNING_TIME_GP  // Fig. 6's gnuplot script, beside this file
 #define GJKX_TORSO_RUNNING_TIME_GP "chapters/08_torso/running_time.gp"
@@ -324,6 +336,87 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run, const std:
   return true;
 }
 
+/// The torso scene in every simulator of the peers table (see the file's head): reads the
+/// CSV of `gjkx_peers_table --frames` (scene, frame, time at its end, its wall time over its
+/// simulated time, simulator last: a name may hold a comma), writes the torso's rows as
+/// OUT/data/peers-torso-frames.csv (a step per frame, a column per simulator) and runs
+/// peers_frames.gp there. Returns false (and says why) without the file, a torso row or gnuplot.
+bool peersFramesFigure(const std::string& out, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) {
+    std::cerr << "08_torso: warning: no peers' frames at " << path << "; peers-torso-frames.png skipped\n";
+    return false;
+  }
+  std::vector<std::string> names;
+  std::vector<std::vector<std::pair<double, double>>> series;  // per simulator: (end time, ratio) per frame
+  std::string line;
+  std::getline(in, line);  // the header
+  for (int row = 2; std::getline(in, line); ++row) {
+    if (line.empty()) continue;
+    std::string cell[4];
+    std::size_t at = 0;
+    for (std::string& c : cell) {
+      const std::size_t comma = line.find(',', at);
+      if (comma == std::string::npos) throw std::runtime_error(path + ":" + std::to_string(row) + ": fewer than 5 cells");
+      c = line.substr(at, comma - at);
+      at = comma + 1;
+    }
+    if (cell[0] != "torso") continue;
+    const std::string name = line.substr(at);
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end()) {
+      names.push_back(name);
+      series.emplace_back();
+    }
+    series[std::size_t(std::find(names.begin(), names.end(), name) - names.begin())].emplace_back(std::stod(cell[2]),
+                                                                                                  std::stod(cell[3]));
+  }
+  if (names.empty()) {
+    std::cerr << "08_torso: warning: no torso rows in " << path << "; peers-torso-frames.png skipped\n";
+    return false;
+  }
+  std::size_t frames = series[0].size();
+  double least = 1, most = 1;
+  for (const auto& s : series) {
+    frames = std::min(frames, s.size());
+    for (const auto& [t, ratio] : s)
+      if (ratio > 0) least = std::min(least, ratio), most = std::max(most, ratio);
+  }
+  const std::string folder = out + "/data", name = "peers-torso-frames";
+  std::filesystem::create_directories(folder);
+  std::ofstream csv(folder + "/" + name + ".csv");
+  csv << "# written by 08_torso from " << std::filesystem::path(path).filename().string()
+      << " (gjkx_peers_table --frames): the torso scene, each frame's wall time over its simulated time, at the "
+         "frame's start and end (a step per frame); the columns: time";
+  for (const std::string& n : names) csv << ", " << n;
+  csv << '\n';
+  for (std::size_t k = 0; k < frames; ++k) {
+    std::string row;
+    for (const auto& s : series) row += chapter::format(",%.6g", s[k].second);
+    csv << (k == 0 ? 0.0 : series[0][k - 1].first) << row << '\n' << series[0][k].first << row << '\n';
+  }
+  csv.close();
+  const std::string figure = name + "." + chapter::figureFormat();
+  std::ostringstream set;
+  set << "data=" << gnuplotString(name + ".csv") << "; out=" << gnuplotString("../" + figure)
+      << "; format=" << gnuplotString(chapter::figureFormat()) << "; count=" << names.size();
+  for (std::size_t i = 0; i < names.size(); ++i) set << "; name" << i + 1 << "=" << gnuplotString(names[i]);
+  // The log axis: whole decades around every frame and real time.
+  set << "; xmax=" << series[0][frames - 1].first << "; bottom=" << std::pow(10.0, std::floor(std::log10(least)))
+      << "; top=" << std::pow(10.0, std::ceil(std::log10(most)));
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
+    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped " << figure << "\n";
+    return false;
+  }
+  const std::string command = "cd " + shellWord(folder) + " && gnuplot -e " + shellWord(set.str()) + " " + shellWord(GJKX_PEERS_FRAMES_GP);
+  if (std::system(command.c_str()) != 0) {
+    std::cerr << "08_torso: gnuplot failed on " << GJKX_PEERS_FRAMES_GP << " with " << set.str() << "\n";
+    return false;
+  }
+  chapter::wrote(out + "/" + figure);
+  return true;
+}
+
 /// The statistics table of the runs `specs` ("LABEL=DIR" or "DIR", labelled by the folder's
 /// name) written to `table`.
 void statsTable(const std::vector<std::string>& specs, const std::string& table, const std::string& command) {
@@ -352,7 +445,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Draws chapter 08's figures: the generated torso and plant, and Fig. 5 (the torso crashing into "
                "the plant) from a kept run of gjkx_simulate."};
   std::string out = ".", run = GJKX_TORSO_RUN, hybridRun = GJKX_TORSO_RUN_HYBRID, paperRun = GJKX_TORSO_RUN_PAPER,
-              framesDir;
+              framesDir, peersFrames = GJKX_PEERS_FRAMES;
   std::uint32_t seed = 1;
   bool reduced = false;
   std::vector<std::string> statsRuns;
@@ -367,6 +460,9 @@ int main(int argc, char** argv) {
                  "--solver paper), drawn beside Fig. 6 as the reproduction")
       ->capture_default_str();
   app.add_option("--frames", framesDir, "also write one figure per frame of the run into this folder");
+  app.add_option("--peers-frames", peersFrames,
+                 "the frames of every simulator on the peers table's scenes (gjkx_peers_table --frames), drawn for the torso")
+      ->capture_default_str();
   app.add_option("--seed", seed, "the seed the run's scene was generated with (gjkx_generate_torso --seed)")
       ->capture_default_str();
   app.add_flag("--reduced", reduced, "the run is of the reduced scene (gjkx_generate_torso --reduced)");
@@ -446,6 +542,7 @@ int main(int argc, char** argv) {
     if (kept) runningTimeFigure(out, *kept, "fig06-torso-running-time", fig6Axes(shown));
     if (hybrid) runningTimeFigure(out, *hybrid, "fig06-torso-running-time-hybrid", fig6Axes(shown));
     if (paper) runningTimeFigure(out, *paper, "fig06-torso-running-time-paper", fig6Axes(shown));
+    peersFramesFigure(out, peersFrames);
     if (!framesDir.empty()) {
       if (frames.empty()) throw std::runtime_error("--frames needs a run: " + run + "/bodies.csv is missing");
       std::filesystem::create_directories(framesDir);

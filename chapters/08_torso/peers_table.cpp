@@ -5,6 +5,7 @@
 // the same checks (gjkx::FrameVerifier), written as one markdown table.
 //
 //   gjkx_peers_table NAME=SCENE.json ... [--duration S] [--work DIR] [--bin DIR] [--reuse] --table OUT.md
+//                    [--frames OUT.csv]
 //
 // For each scene and simulator it runs `PROGRAM SCENE --out WORK/NAME-PROGRAM --quiet`
 // (gjkx_simulate with `--contact hybrid --checks`; a scene longer than --duration is cut
@@ -23,6 +24,9 @@
 // - the slowest frame and the median frame: each frame's own wall time (as above) over the
 //   simulated time it covers, the largest (and which frame) and the median. Real time is 1:
 //   a run can be fast on the whole and still stall at one frame (a crash).
+// With --frames, every run's frames go to a CSV file too, one row each (scene, frame, time
+// at its end, its wall time over its simulated time, simulator last: its name may hold a
+// comma), which 08_torso draws for the torso (peers-torso-frames.png).
 // A program that fails is a row saying so, with its exit status and the last line it wrote
 // on standard error (each run's standard error is kept in its folder, stderr.txt). Where
 // MuJoCo fails, a second row runs it again with its implicit integrator
@@ -66,6 +70,7 @@ struct Row {
   double energyDrift = 0, energyRise = 0;  ///< J: end less start; largest rise above the start
   double slowest = 0, median = 0;        ///< a frame's wall time over its simulated time: the largest, the median
   int slowestFrame = 0;                  ///< the frame of the largest
+  std::vector<std::pair<double, double>> frames;  ///< each frame's end time and its ratio, as in `slowest`
   bool reused = false;                   ///< read from an earlier run in WORK (--reuse), not run now
 };
 
@@ -103,7 +108,7 @@ const std::vector<std::string> kFramesColumns = {"frame", "time", "wall_s", "max
 /// Each frame's wall time over the simulated time it covers (frames.csv's `time` is its end;
 /// the first starts at 0), `wall[k]` the frame's wall seconds: {largest, its frame number, median}.
 std::tuple<double, int, double> frameRatios(const std::vector<double>& frame, const std::vector<double>& time,
-                                            const std::vector<double>& wall) {
+                                            const std::vector<double>& wall, std::vector<std::pair<double, double>>& each) {
   std::vector<double> ratios;
   double largest = 0, start = 0;
   int which = 0;
@@ -111,6 +116,7 @@ std::tuple<double, int, double> frameRatios(const std::vector<double>& frame, co
     const double ratio = wall[k] / (time[k] - start);
     start = time[k];
     ratios.push_back(ratio);
+    each.emplace_back(time[k], ratio);
     if (ratio > largest) {
       largest = ratio;
       which = int(std::lround(frame[k]));
@@ -213,6 +219,8 @@ int main(int argc, char** argv) {
   app.add_option("--work", work, "folder for the runs (one folder each)")->capture_default_str();
   app.add_option("--bin", bin, "folder of the programs (default: this program's)");
   app.add_option("--table", tableOut, "the markdown table to write")->required();
+  std::string framesOut;
+  app.add_option("--frames", framesOut, "also write every run's frames (wall time over simulated time) to this CSV file");
   bool reuse = false;
   app.add_flag("--reuse", reuse, "read a run already complete in WORK (all its frames) instead of running it again");
   chapter::parseOrExit(app, argc, argv);
@@ -304,7 +312,7 @@ int main(int argc, char** argv) {
           std::vector<double> frameWall = run.at("wall_s");
           if (sim.program == "gjkx_simulate")
             for (std::size_t k = 0; k < frameWall.size(); ++k) frameWall[k] -= run.at("checks_s")[k];
-          std::tie(row.slowest, row.slowestFrame, row.median) = frameRatios(run.at("frame"), run.at("time"), frameWall);
+          std::tie(row.slowest, row.slowestFrame, row.median) = frameRatios(run.at("frame"), run.at("time"), frameWall, row.frames);
           const std::vector<double>& depth = run.at("max_penetration");
           row.penetration = std::max(0.0, *std::max_element(depth.begin(), depth.end()));
           row.tunnelled = std::lround(sum("tunnelled"));
@@ -316,6 +324,18 @@ int main(int argc, char** argv) {
         }
       }
       rows.push_back(row);
+    }
+  }
+  if (!framesOut.empty()) {
+    std::ofstream csv(framesOut);
+    csv << "scene,frame,time,frame_over_real_time,simulator\n";
+    for (const Row& r : rows)
+      for (std::size_t k = 0; k < r.frames.size(); ++k)
+        csv << r.scene << ',' << k + 1 << ',' << chapter::format("%.6g", r.frames[k].first) << ','
+            << chapter::format("%.6g", r.frames[k].second) << ',' << r.simulator << '\n';
+    if (!csv) {
+      std::cerr << "gjkx_peers_table: cannot write " << framesOut << "\n";
+      return 1;
     }
   }
   std::ofstream file(tableOut);

@@ -29,7 +29,8 @@ TEST_CASE("gjkx_peers_table runs a scene labelled with a space, in a folder with
     return test::readText(table);
   };
   // Ours runs; a row per simulator built, none of them failed for its command line.
-  const std::string made = tableOf("");
+  const fs::path framesCsv = dir / "frames.csv";
+  const std::string made = tableOf("--frames '" + framesCsv.string() + "' ");
   CHECK(made.find("| thin plate | gjkx (hybrid) | 0.25 s |") != std::string::npos);
   CHECK(made.find("failed") == std::string::npos);
   CHECK(made.find("*earlier*") == std::string::npos);  // every run made by this call
@@ -63,6 +64,25 @@ TEST_CASE("gjkx_peers_table runs a scene labelled with a space, in a folder with
     INFO(made);
     CHECK(made.find(cell) != std::string::npos);
     CHECK(made.find("| slowest frame over its simulated time | median frame over its simulated time |") != std::string::npos);
+    // --frames: every frame of ours in the CSV, its largest ratio the table's.
+    std::ifstream csv(framesCsv);
+    std::getline(csv, line);
+    CHECK(line == "scene,frame,time,frame_over_real_time,simulator");
+    int ours = 0;
+    double oursLargest = 0;
+    while (std::getline(csv, line)) {
+      if (line.size() < 14 || line.compare(line.size() - 13, 13, "gjkx (hybrid)") != 0) continue;
+      CHECK(line.rfind("thin plate,", 0) == 0);
+      ++ours;
+      std::vector<std::string> cells;
+      for (std::istringstream in(line); std::getline(in, line, ',');) cells.push_back(line);
+      oursLargest = std::max(oursLargest, std::stod(cells.at(3)));
+    }
+    CHECK(ours == 6);
+    std::snprintf(cell, sizeof cell, "%.3g", oursLargest);
+    char tabled[64];
+    std::snprintf(tabled, sizeof tabled, "%.3g", largest);
+    CHECK(std::string(cell) == tabled);
   }
   // Again with --reuse: the rows are read from those runs, and the table says so.
   const std::string reused = tableOf("--reuse ");
