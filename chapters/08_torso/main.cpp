@@ -239,6 +239,24 @@ std::string shellWord(const std::string& text) {
   return quoted + "'";
 }
 
+/// Runs the gnuplot script `script` in `folder` (where its data, `name`.csv, was written)
+/// with the settings `set` (gnuplot -e), drawing `figure` into `out`. Returns false, and
+/// says why, when gnuplot is missing or fails.
+bool gnuplotFigure(const std::string& out, const std::string& folder, const std::string& name,
+                   const std::string& figure, const std::string& set, const std::string& script) {
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
+    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped " << figure << "\n";
+    return false;
+  }
+  const std::string command = "cd " + shellWord(folder) + " && gnuplot -e " + shellWord(set) + " " + shellWord(script);
+  if (std::system(command.c_str()) != 0) {
+    std::cerr << "08_torso: gnuplot failed on " << script << " with " << set << "\n";
+    return false;
+  }
+  chapter::wrote(out + "/" + figure);
+  return true;
+}
+
 /// Fig. 6's axes (running_time.gp says what each is).
 struct Fig6Axes {
   bool twoPanels = false;  ///< the frames and the paper's range span more than a factor 30
@@ -323,17 +341,7 @@ bool runningTimeFigure(const std::string& out, const torso::Run& run, const std:
     set << "; bottom=" << axes.bottom << "; top=" << axes.top << "; stackTop=" << axes.stackTop;
   else
     set << "; stackTop=" << axes.stackTop;
-  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
-    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped Fig. 6\n";
-    return false;
-  }
-  const std::string command = "cd " + shellWord(folder) + " && gnuplot -e " + shellWord(set.str()) + " " + shellWord(GJKX_TORSO_RUNNING_TIME_GP);
-  if (std::system(command.c_str()) != 0) {
-    std::cerr << "08_torso: gnuplot failed on " << GJKX_TORSO_RUNNING_TIME_GP << " with " << set.str() << "\n";
-    return false;
-  }
-  chapter::wrote(out + "/" + figure);
-  return true;
+  return gnuplotFigure(out, folder, name, figure, set.str(), GJKX_TORSO_RUNNING_TIME_GP);
 }
 
 /// The torso scene in every simulator of the peers table (see the file's head): reads the
@@ -404,17 +412,7 @@ bool peersFramesFigure(const std::string& out, const std::string& path) {
   // The log axis: whole decades around every frame and real time.
   set << "; xmax=" << series[0][frames - 1].first << "; bottom=" << std::pow(10.0, std::floor(std::log10(least)))
       << "; top=" << std::pow(10.0, std::ceil(std::log10(most)));
-  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
-    std::cerr << "08_torso: gnuplot not found: wrote " << folder << "/" << name << ".csv, skipped " << figure << "\n";
-    return false;
-  }
-  const std::string command = "cd " + shellWord(folder) + " && gnuplot -e " + shellWord(set.str()) + " " + shellWord(GJKX_PEERS_FRAMES_GP);
-  if (std::system(command.c_str()) != 0) {
-    std::cerr << "08_torso: gnuplot failed on " << GJKX_PEERS_FRAMES_GP << " with " << set.str() << "\n";
-    return false;
-  }
-  chapter::wrote(out + "/" + figure);
-  return true;
+  return gnuplotFigure(out, folder, name, figure, set.str(), GJKX_PEERS_FRAMES_GP);
 }
 
 /// The statistics table of the runs `specs` ("LABEL=DIR" or "DIR", labelled by the folder's
