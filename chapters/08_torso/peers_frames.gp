@@ -1,5 +1,5 @@
 # The torso scene in every simulator of the peers table (gjkx_peers_table --frames, docs 08,
-# "The peers side by side"), drawn by gnuplot for 08_torso (main.cpp, peersFramesFigure):
+# "The peers side by side"), drawn by gnuplot for 08_torso (running_time.hpp, peersFramesFigure):
 # per frame, its wall time over its simulated time against simulated time, one line per
 # simulator, on a log axis with real time at 1. Fig. 6 shows where our time goes; this shows
 # how far each simulator is from real time, frame by frame, on the same scene.

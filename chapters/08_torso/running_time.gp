@@ -1,5 +1,5 @@
 # Fig. 6 of the paper, "Running Time for Torso-Plant Simulation", drawn by gnuplot for
-# 08_torso (chapter 08, main.cpp runningTimeFigure), and its companion of the run under the
+# 08_torso (chapter 08, running_time.hpp runningTimeFigure), and its companion of the run under the
 # hybrid contact model on the same axes: per frame, the method's execution time
 # over the frame's simulated time, stacked by part, against simulated time; the real-time
 # line y = 1 and the paper's range for comparison. When the frames and the paper's range
