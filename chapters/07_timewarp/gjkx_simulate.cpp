@@ -13,7 +13,8 @@
 //
 // which is also written to DIR/summary.txt, followed by a line saying how the run was made
 // (RUN scene=... bodies=N scalar=... solver=... variant=... ordering=... tolerance=... frame_rate=...
-// checks=on|off ... impulse_tolerance=... sticking_tolerance=...), so that a kept run says
+// checks=on|off ... impulse_tolerance=... sticking_tolerance=..., then tuning.NAME=VALUE for
+// each --tuning), so that a kept run says
 // what it is, and by a WORK line of counts that do not depend on the machine's load (and the
 // process's peak resident memory, at its end).
 //
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   double tolerance = 0, duration = 0, frameRate = 0, decomposeBudget = 0;
   bool checks = false, noChecks = false, quiet = false, coldStarts = false, noFronts = false, noCoherence = false;
   gjkx::ImpulseSettings impulse;
+  std::vector<std::string> tunings;
   app.add_option("scene", scenePath, "the scene file (JSON)")->required();
   app.footer("Every key of the scene file, every option and every column of the outputs: docs/07_timewarp.md in "
              "the source tree (the Doxygen page '07 Timewarp': cmake --build build --target docs).");
@@ -120,6 +122,11 @@ int main(int argc, char** argv) {
                  "tangential speed counted as zero in the impulse integration, a fraction of the approach speed")
       ->check(CLI::Range(1e-300, 0.999999))
       ->capture_default_str();
+  app.add_option("--tuning", tunings,
+                 "set a constant of the step, NAME=VALUE (repeatable): NAME a field of gjkx::StepTuning, e.g. "
+                 "contactSettled=0.25; the run's RUN line lists them (every name and why its default is what it is: "
+                 "lib/timewarp/include/gjkx/timewarp/settings.hpp)")
+      ->type_name("NAME=VALUE");
   app.add_flag("--quiet", quiet, "no progress bar");
   chapter::parseOrExit(app, argc, argv);
 
@@ -160,6 +167,19 @@ int main(int argc, char** argv) {
     impulse.relativeTolerance = impulse.absoluteTolerance;
     settings.impulse = impulse;
     if (app.count("--mesh-cache")) settings.meshCache = meshCache;
+    for (const std::string& t : tunings) {
+      const std::size_t eq = t.find('=');
+      if (eq == std::string::npos) {
+        std::cerr << "gjkx_simulate: --tuning " << t << ": expected NAME=VALUE\n";
+        return 2;
+      }
+      try {
+        gjkx::setTuning(settings.tuning, t.substr(0, eq), t.substr(eq + 1));
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "gjkx_simulate: --tuning: " << e.what() << "\n";
+        return 2;
+      }
+    }
     settings.decompositionBudget = decomposeBudget;
     if (!quiet && isatty(fileno(stderr)))  // the run's progress bar, while a mesh is decomposed
       settings.decompositionProgress = [](const std::string& mesh, const gjkx::DecompositionProgress& p) {
@@ -258,7 +278,9 @@ int main(int argc, char** argv) {
           << " checks=" << (noChecks ? "off" : "on") << " warm_starts=" << (coldStarts || solver == "paper" ? "off" : "on")
           << " coherence=" << (coldStarts || noCoherence || solver == "paper" ? "off" : "on")
           << " front_tracking=" << (noFronts ? "off" : "on") << " impulse_tolerance=" << impulse.absoluteTolerance
-          << " sticking_tolerance=" << impulse.stickingTolerance << "\n";
+          << " sticking_tolerance=" << impulse.stickingTolerance;
+  for (const std::string& t : tunings) summary << " tuning." << t;
+  summary << "\n";
   // The work done, in counts that do not depend on the machine's load: what a change to the
   // solver or the hierarchy buys shows here even where wall times are noisy.
   summary << "WORK complete_tests=" << total.completeTests << " sd_evaluations=" << total.sdEvaluations

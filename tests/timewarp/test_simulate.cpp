@@ -182,6 +182,48 @@ TEST_CASE("gjkx_simulate overrides duration and frame rate, and writes the colli
   fs::remove_all(out);
 }
 
+TEST_CASE("gjkx_simulate --tuning sets a constant of the step, says so, and refuses a bad one by name", "[simulate]") {
+  const fs::path out = freshFolder("tuning");
+  const std::string scene = "\"" + std::string(GJKX_SCENES) + "/cradle.json\" --out \"" + out.string() + "\" --quiet";
+  const auto summaryFile = [&] {
+    std::ifstream in(out / "summary.txt");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  // A cap of one event per interval: the cradle's collisions reach it, which the WORK line
+  // of summary.txt counts (event_caps), where the defaults never do.
+  REQUIRE(simulate(scene).status == 0);
+  const auto defaults = summary(summaryFile(), "WORK");
+  REQUIRE(defaults.count("event_caps") == 1);
+  CHECK(defaults.at("event_caps") == "0");
+  const Result capped = simulate(scene + " --tuning eventCap=1 --tuning eventCapPerBody=0");
+  INFO(capped.output);
+  REQUIRE(capped.status == 0);
+  CHECK(capped.output.find("reached the event cap") != std::string::npos);
+  const std::string text = summaryFile();
+  REQUIRE(summary(text, "WORK").count("event_caps") == 1);
+  CHECK(std::stol(summary(text, "WORK").at("event_caps")) > 0);
+  const auto run = summary(text, "RUN");
+  REQUIRE(run.count("tuning.eventCap") == 1);
+  CHECK(run.at("tuning.eventCap") == "1");
+  CHECK(run.at("tuning.eventCapPerBody") == "0");
+  // Refused: an unknown name (the known ones listed), a count that is not whole, no value
+  // (the command line: status 2); a number out of the field's range (the world: status 1).
+  const Result unknown = simulate(scene + " --tuning contactSettle=0.2");
+  CHECK(unknown.status == 2);
+  CHECK(unknown.output.find("tuning.contactSettle: no such setting (known: patchDepth,") != std::string::npos);
+  const Result fraction = simulate(scene + " --tuning eventCap=1.5");
+  CHECK(fraction.status == 2);
+  CHECK(fraction.output.find("tuning.eventCap: must be a whole number") != std::string::npos);
+  CHECK(simulate(scene + " --tuning eventCap").status == 2);
+  const Result range = simulate(scene + " --tuning contactSettled=-1");
+  CHECK(range.status == 1);
+  CHECK(range.output.find("settings.tuning.contactSettled") != std::string::npos);
+  for (const Result* r : {&unknown, &fraction, &range}) CHECK(r->output.find("SUMMARY") == std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST_CASE("gjkx_simulate refuses a duration whose frames do not fit, naming the file and the field", "[simulate]") {
   const fs::path dir = freshFolder("long");
   fs::create_directories(dir);

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace gjkx;
 
@@ -556,6 +557,49 @@ TEST_CASE("world: a step's tunables are checked by name before the bodies are bu
   settings = {};
   settings.tuning.spinIntervals = 0;  // no body could cut a frame
   CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.spinIntervals"));
+}
+
+TEST_CASE("world: every constant of a step can be set by its name, each name its own field") {
+  // setTuning's table is written by hand beside the struct: each name must reach a field
+  // of its own (two names on one field, or a name on none, fail here), and every name the
+  // validation reports must be settable.
+  const std::vector<std::string> names = tuningNames();
+  REQUIRE(names.size() >= 30);
+  const auto bytes = [](const StepTuning& t) {
+    return std::string(reinterpret_cast<const char*>(&t), sizeof t);
+  };
+  std::vector<std::size_t> changed;  // per name, the first byte it changed
+  for (const std::string& name : names) {
+    StepTuning t;
+    const std::string before = bytes(t);
+    setTuning(t, name, "7");  // 7 is no field's default
+    const std::string after = bytes(t);
+    std::size_t at = 0;
+    while (at < before.size() && before[at] == after[at]) ++at;
+    INFO(name);
+    REQUIRE(at < before.size());
+    CHECK(std::find(changed.begin(), changed.end(), at) == changed.end());
+    changed.push_back(at);
+  }
+  StepTuning t;
+  setTuning(t, "contactSettled", "0.25");
+  CHECK(t.contactSettled == 0.25);
+  setTuning(t, "contactIterations", "64");
+  CHECK(t.contactIterations == 64);
+  setTuning(t, "eventCap", "12345678901");
+  CHECK(t.eventCap == 12345678901L);
+  CHECK_THROWS_WITH(setTuning(t, "noSuch", "1"), Catch::Contains("tuning.noSuch: no such setting (known: patchDepth"));
+  CHECK_THROWS_WITH(setTuning(t, "contactSettled", "0.2x"), Catch::Contains("tuning.contactSettled: must be a finite number"));
+  CHECK_THROWS_WITH(setTuning(t, "contactSettled", "inf"), Catch::Contains("tuning.contactSettled"));
+  CHECK_THROWS_WITH(setTuning(t, "contactIterations", "3.5"), Catch::Contains("tuning.contactIterations: must be a whole number"));
+  CHECK_THROWS_WITH(setTuning(t, "contactIterations", "99999999999"), Catch::Contains("tuning.contactIterations"));
+  CHECK_THROWS_WITH(setTuning(t, "contactIterations", ""), Catch::Contains("tuning.contactIterations"));
+  // In range is the world's to check, by the same name.
+  WorldSettings settings;
+  setTuning(settings.tuning, "struckStep", "2");
+  const Scene scene = parseScene(R"({ "duration": 0.1,
+      "bodies": [ { "name": "ball", "shape": {"sphere": 0.1}, "position": [0, 0, 1] } ] })");
+  CHECK_THROWS_WITH(World(scene, settings), Catch::Contains("settings.tuning.struckStep"));
 }
 
 TEST_CASE("world: a frame past the event cap ends with its status, counted, not with an exception") {

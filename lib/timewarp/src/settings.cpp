@@ -3,7 +3,11 @@
 
 #include <gjkx/motion/vector.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <variant>
 
 namespace gjkx {
 
@@ -54,6 +58,86 @@ void StepTuning::validate(const std::string& field) const {
   atLeast(eventCapPerBody, 0, field + ".eventCapPerBody");
   atLeast(maxIntervals, 1, field + ".maxIntervals");
   atLeast(maxSpinIntervals, maxIntervals, field + ".maxSpinIntervals");
+}
+
+namespace {
+
+/// One field of StepTuning: its name and where it is in the struct (a double, or a count).
+struct TuningField {
+  const char* name;
+  std::variant<double StepTuning::*, int StepTuning::*, long StepTuning::*> member;
+};
+
+/// Every field of StepTuning, in the struct's order (a field added there is added here).
+const TuningField kTuningFields[] = {
+    {"patchDepth", &StepTuning::patchDepth},
+    {"acceptedBand", &StepTuning::acceptedBand},
+    {"acceptedAfter", &StepTuning::acceptedAfter},
+    {"closingBand", &StepTuning::closingBand},
+    {"reliableNormal", &StepTuning::reliableNormal},
+    {"settleEnergy", &StepTuning::settleEnergy},
+    {"approachSpeed", &StepTuning::approachSpeed},
+    {"minLookAhead", &StepTuning::minLookAhead},
+    {"maxLookAhead", &StepTuning::maxLookAhead},
+    {"windowBand", &StepTuning::windowBand},
+    {"minPath", &StepTuning::minPath},
+    {"settleSeconds", &StepTuning::settleSeconds},
+    {"caughtAfter", &StepTuning::caughtAfter},
+    {"sameInstantAfter", &StepTuning::sameInstantAfter},
+    {"instantImpulses", &StepTuning::instantImpulses},
+    {"contactBand", &StepTuning::contactBand},
+    {"restSeparation", &StepTuning::restSeparation},
+    {"contactSpeed", &StepTuning::contactSpeed},
+    {"contactIterations", &StepTuning::contactIterations},
+    {"contactSettled", &StepTuning::contactSettled},
+    {"contactCheckBand", &StepTuning::contactCheckBand},
+    {"contactIntervals", &StepTuning::contactIntervals},
+    {"spinIntervals", &StepTuning::spinIntervals},
+    {"struckStep", &StepTuning::struckStep},
+    {"positionIterations", &StepTuning::positionIterations},
+    {"contactMatch", &StepTuning::contactMatch},
+    {"eventCap", &StepTuning::eventCap},
+    {"eventCapPerBody", &StepTuning::eventCapPerBody},
+    {"maxIntervals", &StepTuning::maxIntervals},
+    {"maxSpinIntervals", &StepTuning::maxSpinIntervals},
+};
+
+}  // namespace
+
+std::vector<std::string> tuningNames() {
+  std::vector<std::string> names;
+  for (const TuningField& f : kTuningFields) names.emplace_back(f.name);
+  return names;
+}
+
+void setTuning(StepTuning& tuning, const std::string& name, const std::string& value) {
+  const std::string field = "tuning." + name;
+  for (const TuningField& f : kTuningFields) {
+    if (name != f.name) continue;
+    const char* text = value.c_str();
+    char* end = nullptr;
+    errno = 0;
+    if (auto* d = std::get_if<double StepTuning::*>(&f.member)) {
+      const double v = std::strtod(text, &end);
+      if (value.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        failInput(field, "must be a finite number, got '" + value + "'");
+      tuning.*(*d) = v;
+      return;
+    }
+    const long v = std::strtol(text, &end, 10);
+    if (value.empty() || *end != '\0' || errno == ERANGE) failInput(field, "must be a whole number, got '" + value + "'");
+    if (auto* i = std::get_if<int StepTuning::*>(&f.member)) {
+      if (v < long(std::numeric_limits<int>::min()) || v > long(std::numeric_limits<int>::max()))
+        failInput(field, "is out of an int's range, got '" + value + "'");
+      tuning.*(*i) = int(v);
+    } else {
+      tuning.*(std::get<long StepTuning::*>(f.member)) = v;
+    }
+    return;
+  }
+  std::string known;
+  for (const TuningField& f : kTuningFields) known += (known.empty() ? "" : ", ") + std::string(f.name);
+  failInput(field, "no such setting (known: " + known + ")");
 }
 
 void WorldSettings::validate(const std::string& field) const {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gjkx {
 
@@ -169,6 +170,19 @@ struct StepTuning {
   /// Throws std::invalid_argument naming `field`.member for a value out of its range.
   void validate(const std::string& field) const;
 };
+
+/// The names of StepTuning's fields, in the order the struct declares them: what
+/// `setTuning` accepts (gjkx_simulate's --tuning).
+std::vector<std::string> tuningNames();
+
+/// Sets the field `name` of `tuning` (its name in the struct, e.g. "contactSettled") from
+/// the text `value`, so that what a constant buys can be measured on a scene without a
+/// rebuild (gjkx_simulate --tuning contactSettled=0.25). Throws std::invalid_argument naming
+/// "tuning.<name>" for an unknown name (the message lists the known ones), or for a value
+/// that is not a number of the field's type (a whole number for a count) in full; whether
+/// the number is in the field's range is StepTuning::validate's to say, when the world is
+/// built.
+void setTuning(StepTuning& tuning, const std::string& name, const std::string& value);
 
 /// How a world is run: the solver's switches and the step's tunables (what a scene *is*
 /// stays in scene.hpp).
