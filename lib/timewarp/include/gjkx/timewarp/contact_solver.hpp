@@ -62,6 +62,9 @@ struct GroupSolve {
   double kineticBefore = 0;  ///< the group's kinetic energy after gravity's impulse, before the contacts
   double kineticAfter = 0;   ///< after the contacts
   int sweeps = 0;            ///< sweeps of sequential impulses over the group's points
+  /// True if the solve raised the kinetic energy by more than round-off (the column
+  /// `energy_rises` counts such solves).
+  bool energyRose() const;
 };
 
 /// Solves the velocities of the bodies `group` at states `states` (indexed by body) against
