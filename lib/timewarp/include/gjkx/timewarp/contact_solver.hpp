@@ -15,7 +15,8 @@
 ///   bodies in persistent contact.
 /// - Each group is advanced by a **velocity-level solver**: gravity's impulse over the
 ///   interval is added to each body's velocity, then sequential impulses (projected
-///   Gauss–Seidel) find the normal and friction impulses at every manifold point, warm-started
+///   Gauss–Seidel, its sweeps going up the pile and down it in turn: symmetric Gauss–Seidel)
+///   find the normal and friction impulses at every manifold point, warm-started
 ///   from the impulses the same points took in the last solve. The solved velocities are
 ///   the bodies' velocities over the whole interval (semi-implicit Euler), and each body's
 ///   path is the torque-free flight from them, gravity off: a motion of the `motion` stage
