@@ -308,10 +308,10 @@ int main(int argc, char** argv) {
           };
           row.simulated = run.at("time").back();
           // gjkx_simulate's wall_s holds its checks; a peer's leaves them out.
-          row.wall = sim.program == "gjkx_simulate" ? sum("wall_s") - sum("checks_s") : sum("wall_s");
           std::vector<double> frameWall = run.at("wall_s");
           if (sim.program == "gjkx_simulate")
             for (std::size_t k = 0; k < frameWall.size(); ++k) frameWall[k] -= run.at("checks_s")[k];
+          row.wall = std::accumulate(frameWall.begin(), frameWall.end(), 0.0);
           std::tie(row.slowest, row.slowestFrame, row.median) = frameRatios(run.at("frame"), run.at("time"), frameWall, row.frames);
           const std::vector<double>& depth = run.at("max_penetration");
           row.penetration = std::max(0.0, *std::max_element(depth.begin(), depth.end()));

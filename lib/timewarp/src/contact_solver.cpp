@@ -141,9 +141,9 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   // (a tenth) of the speed that closes the rest separation in the interval (StepTuning::contactIterations
   // at most). The rows are ordered from the bottom up (against gravity), as Guendelman et
   // al. order their contact graph, and the sweeps go up and down it in turn: symmetric
-  // Gauss–Seidel. Sweeps that always went up left each sweep's error leaning one way (a
-  // pile's boxes drifted sideways together and it took three times the sweeps to settle);
-  // a sweep down undoes the lean of the sweep up before it.
+  // Gauss–Seidel. A sweep that goes one way leaves its error leaning that way (a resting
+  // pile's boxes drift sideways together, and settle slowly); a sweep down undoes the lean
+  // of the sweep up before it.
   if (step.scene.gravity.squaredNorm() > 0) {
     const Eigen::Vector3d up = -step.scene.gravity.normalized();
     std::stable_sort(rows.begin(), rows.end(),

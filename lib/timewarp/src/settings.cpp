@@ -69,6 +69,11 @@ struct TuningField {
 };
 
 /// Every field of StepTuning, in the struct's order (a field added there is added here).
+// The struct's size is its 18 doubles, 2 longs and 10 ints with their padding (on the LP64
+// systems the project builds on): a field added to it stops the build here until it has a
+// name below (the tests check that each name reaches a field of its own).
+static_assert(sizeof(long) != 8 || sizeof(StepTuning) == 216,
+              "StepTuning changed: give its new field a name in kTuningFields, then update this size");
 const TuningField kTuningFields[] = {
     {"patchDepth", &StepTuning::patchDepth},
     {"acceptedBand", &StepTuning::acceptedBand},
@@ -136,7 +141,7 @@ void setTuning(StepTuning& tuning, const std::string& name, const std::string& v
     return;
   }
   std::string known;
-  for (const TuningField& f : kTuningFields) known += (known.empty() ? "" : ", ") + std::string(f.name);
+  for (const std::string& n : tuningNames()) known += (known.empty() ? "" : ", ") + n;
   failInput(field, "no such setting (known: " + known + ")");
 }
 
