@@ -1,7 +1,8 @@
 // The three torso runs kept in figures/data/ (docs 08: ours, the paper's §5, the hybrid) are
-// what gjkx_simulate does now. Fig. 5, Fig. 6 and its companions, the statistics table and
-// the peers table are drawn from them, and a change to the step that changes what a run does
-// leaves them describing code that no longer exists, unnoticed. Each run is made again over
+// what gjkx_simulate does now. Fig. 5, the crash's animation, Fig. 6 and its companions are
+// drawn from them (and the statistics table's first three columns are runs of the same
+// commands), and a change to the step that changes what a run does leaves them describing
+// code that no longer exists, unnoticed. Each run is made again over
 // its first frames, through the crash (frame 13), and every count of its frames.csv (every
 // column but the timings, which belong to the machine) must equal the kept file's, frame by
 // frame. It fails naming docs 08's command that remakes the run.
