@@ -150,40 +150,44 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
                      [&](const Row& a, const Row& b) { return up.dot(a.point->point) < up.dot(b.point->point); });
   }
   const double settled = tuning.contactSettled * rest / dt;
+  std::vector<double> limits(rows.size(), 0.0);
+  // One row's step: with friction, its tangent impulse within Coulomb's disc of radius
+  // `limit`, then its normal impulse. Returns the largest velocity change it made.
+  const auto relax = [&](Row& row, bool friction, double limit) {
+    double largest = 0;
+    if (friction) {
+      // The tangent plane's 2x2 block solved exactly (its two directions are coupled
+      // through the rotation): the impulse that stops the point's slip if that lies within
+      // Coulomb's disc (it sticks), else the best on the disc's edge (it slides, and feels
+      // mu lambda_n against its slip): frictionInDisc.
+      const Eigen::Vector2d slip(velocityAlong(row, 1), velocityAlong(row, 2));
+      const double speed = slip.norm();
+      if (speed > 0) {
+        const Eigen::Vector2d old(row.f1, row.f2);
+        const Eigen::Vector2d next = frictionInDisc(row.tangent, old, slip, limit);
+        const Eigen::Vector2d change = next - old;
+        row.f1 = next.x();
+        row.f2 = next.y();
+        apply(row, 1, change.x());
+        apply(row, 2, change.y());
+        largest = std::min(speed, change.norm() * row.tangentScale);
+      }
+    }
+    const double vn = velocityAlong(row, 0);
+    const double old = row.lambda;
+    row.lambda = std::max(0.0, old - row.normalMass * (vn - row.target));
+    apply(row, 0, row.lambda - old);
+    return std::max(largest, std::abs(row.lambda - old) / std::max(row.normalMass, 1e-300));
+  };
   // One sweep over the rows, up the pile or down it, in turn through the whole solve (the
   // passes below are a sweep or two each once a pile rests: turning at each pass's start
-  // would send nearly every sweep up): with friction, the tangent impulse within Coulomb's
-  // disc of radius limit, then the normal. Returns the largest velocity change it made.
-  std::vector<double> limits(rows.size(), 0.0);
+  // would send nearly every sweep up).
   const auto sweep = [&](bool friction) {
     double largest = 0;
     const bool down = out.sweeps % 2 == 1;
     for (std::size_t q = 0; q < rows.size(); ++q) {
       const std::size_t r = down ? rows.size() - 1 - q : q;
-      Row& row = rows[r];
-      if (friction) {
-        // The tangent plane's 2x2 block solved exactly (its two directions are coupled
-        // through the rotation): the impulse that stops the point's slip if that lies within
-        // Coulomb's disc (it sticks), else the best on the disc's edge (it slides, and feels
-        // mu lambda_n against its slip): frictionInDisc.
-        const Eigen::Vector2d slip(velocityAlong(row, 1), velocityAlong(row, 2));
-        const double speed = slip.norm();
-        if (speed > 0) {
-          const Eigen::Vector2d old(row.f1, row.f2);
-          const Eigen::Vector2d next = frictionInDisc(row.tangent, old, slip, limits[r]);
-          const Eigen::Vector2d change = next - old;
-          row.f1 = next.x();
-          row.f2 = next.y();
-          apply(row, 1, change.x());
-          apply(row, 2, change.y());
-          largest = std::max(largest, std::min(speed, change.norm() * row.tangentScale));
-        }
-      }
-      const double vn = velocityAlong(row, 0);
-      const double old = row.lambda;
-      row.lambda = std::max(0.0, old - row.normalMass * (vn - row.target));
-      apply(row, 0, row.lambda - old);
-      largest = std::max(largest, std::abs(row.lambda - old) / std::max(row.normalMass, 1e-300));
+      largest = std::max(largest, relax(rows[r], friction, limits[r]));
     }
     ++out.sweeps;
     return largest;
@@ -195,6 +199,90 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   // projected Gauss-Seidel on a convex quadratic program, and each of its steps can only
   // lower the kinetic energy.
   const int budget = tuning.contactIterations;  // per pass
+  // Shock propagation on the velocities (Guendelman, Bridson and Fedkiw 2003), after the
+  // passes. Gauss-Seidel stops when a sweep changes little, not when the pile is still: in
+  // a pile twenty boxes high each level is left closing on the one below by a fraction of
+  // the settled speed, and the errors add up the pile (its top sank a tenth of a tolerance
+  // each interval, and the projection lifted it back: potential energy that fed a rocking
+  // of the whole pile), as does friction's (the pile leaned). So the group is solved once
+  // more level by level from the ground up: a body's level is its count of contacts from a
+  // body the solver does not move (static or asleep: level 0), and at level d the contacts
+  // of level-d bodies with each other and with lower ones are swept (StepTuning::shockSweeps
+  // at most) with the lower bodies held, as if of infinite mass. Each level then rests on
+  // the solved velocities of the one below, and no error is carried up. A group that
+  // touches no such body (bodies in flight together) has no levels and is left as solved.
+  std::vector<int> level(step.bodies.size(), -1);
+  int levels = 0;
+  {
+    std::vector<std::vector<int>> touching(step.bodies.size());
+    std::vector<int> queue;  // breadth first from level 0
+    for (const Row& row : rows) {
+      touching[row.i].push_back(row.j);
+      touching[row.j].push_back(row.i);
+      for (const auto& [b, mass] : {std::pair{row.i, row.massI}, std::pair{row.j, row.massJ}})
+        if (mass == 0 && level[b] < 0) {
+          level[b] = 0;
+          queue.push_back(b);
+        }
+    }
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (int other : touching[queue[q]])
+        if (level[other] < 0) {
+          level[other] = level[queue[q]] + 1;
+          levels = std::max(levels, level[other]);
+          queue.push_back(other);
+        }
+  }
+  // Each level's rows: those of its bodies with each other and with lower ones.
+  std::vector<std::vector<std::size_t>> rowsOfLevel(std::size_t(levels) + 1);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (level[rows[r].i] >= 0 && level[rows[r].j] >= 0)
+      rowsOfLevel[std::size_t(std::max(level[rows[r].i], level[rows[r].j]))].push_back(r);
+  const auto shockPropagation = [&] {
+    std::vector<Row> held;  // one level's rows, the lower body of each held
+    for (int d = 1; d <= levels; ++d) {
+      const std::vector<std::size_t>& heldOf = rowsOfLevel[std::size_t(d)];  // where each came from in rows
+      held.clear();
+      for (std::size_t r : heldOf) {
+        Row row = rows[r];
+        if (level[row.i] < d) {
+          row.massI = 0;
+          for (Eigen::Vector3d& spin : row.spinI) spin.setZero();
+        }
+        if (level[row.j] < d) {
+          row.massJ = 0;
+          for (Eigen::Vector3d& spin : row.spinJ) spin.setZero();
+        }
+        // The response with the lower body held: d.e m_j + (r_j x d) . I_j^-1 (r_j x e), as
+        // `response` with one body.
+        const auto along = [&row](int k, int l) {
+          return row.d[k].dot(row.d[l]) * (row.massI + row.massJ) + row.armI[k].dot(row.spinI[l]) +
+                 row.armJ[k].dot(row.spinJ[l]);
+        };
+        const double k = along(0, 0);
+        row.normalMass = k > 0 ? 1.0 / k : 0.0;
+        Eigen::Matrix2d K;
+        K << along(1, 1), along(1, 2), along(2, 1), along(2, 2);
+        row.tangent = TangentBlock::of(K);
+        row.tangentScale = K.norm();
+        held.push_back(row);
+      }
+      for (int k = 0; k < tuning.shockSweeps; ++k) {
+        double largest = 0;
+        for (std::size_t q = 0; q < held.size(); ++q) {
+          const std::size_t h = k % 2 == 1 ? held.size() - 1 - q : q;
+          largest = std::max(largest, relax(held[h], true, limits[heldOf[h]]));
+        }
+        if (largest < settled) break;
+      }
+      for (std::size_t h = 0; h < held.size(); ++h) {
+        Row& row = rows[heldOf[h]];
+        row.lambda = held[h].lambda;
+        row.f1 = held[h].f1;
+        row.f2 = held[h].f2;
+      }
+    }
+  };
   // The passes, from the stored impulses (warm) or from none (cold).
   const std::vector<Eigen::Vector3d> v0 = v, w0 = w;
   const auto solve = [&](bool warm) {
@@ -225,6 +313,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
       }
       for (int k = 0; k < budget && sweep(true) >= settled; ++k) {}
     }
+    shockPropagation();
   };
   // The solved velocities into the bodies' states, and the group's kinetic energy then.
   const auto kineticAfter = [&] {

@@ -53,6 +53,7 @@ void StepTuning::validate(const std::string& field) const {
   if (!(contactCheckBand > 0 && contactCheckBand <= restSeparation))
     failInput(field + ".contactCheckBand", "must lie in (0, restSeparation]");
   atLeast(positionIterations, 0, field + ".positionIterations");
+  atLeast(shockSweeps, 0, field + ".shockSweeps");
   positive(contactMatch, field + ".contactMatch");
   atLeast(eventCap, 1, field + ".eventCap");
   atLeast(eventCapPerBody, 0, field + ".eventCapPerBody");
@@ -69,7 +70,7 @@ struct TuningField {
 };
 
 /// Every field of StepTuning, in the struct's order (a field added there is added here).
-// The struct's size is its 18 doubles, 2 longs and 10 ints with their padding (on the LP64
+// The struct's size is its 18 doubles, 2 longs and 11 ints with their padding (on the LP64
 // systems the project builds on): a field added to it stops the build here until it has a
 // name below (the tests check that each name reaches a field of its own).
 static_assert(sizeof(long) != 8 || sizeof(StepTuning) == 216,
@@ -100,6 +101,7 @@ const TuningField kTuningFields[] = {
     {"spinIntervals", &StepTuning::spinIntervals},
     {"struckStep", &StepTuning::struckStep},
     {"positionIterations", &StepTuning::positionIterations},
+    {"shockSweeps", &StepTuning::shockSweeps},
     {"contactMatch", &StepTuning::contactMatch},
     {"eventCap", &StepTuning::eventCap},
     {"eventCapPerBody", &StepTuning::eventCapPerBody},
