@@ -38,6 +38,18 @@ std::string box(const std::string& name, Eigen::Vector3d half, Eigen::Vector3d a
 
 const std::string floorBody = R"({ "name": "floor", "shape": {"box": [20, 20, 0.5]}, "position": [0, 0, -0.5], "static": true })";
 
+/// The floor and a pyramid of unit boxes, one box deep: `rows` on the floor, one fewer on
+/// each row above, `spacing` apart along x (centre to centre), the bottom row's centres at
+/// `bottom` and each row 1.0001 above the last (a tenth of a millimetre apart).
+std::vector<std::string> pyramid(int rows, double spacing, double bottom) {
+  std::vector<std::string> bodies{floorBody};
+  for (int row = 0; row < rows; ++row)
+    for (int k = 0; k < rows - row; ++k)
+      bodies.push_back(box("p" + std::to_string(row) + "_" + std::to_string(k), {0.5, 0.5, 0.5},
+                           {(k - (rows - 1 - row) / 2.0) * spacing, 0, bottom + row * 1.0001}));
+  return bodies;
+}
+
 Scene sceneOf(const std::string& settings, const std::vector<std::string>& bodies) {
   std::string list;
   for (const auto& b : bodies) list += (list.empty() ? "" : ", ") + b;
@@ -134,12 +146,7 @@ TEST_CASE("hybrid: a stack of 10 boxes rests 10 s within one tolerance, then sle
 }
 
 TEST_CASE("hybrid: a pyramid of 15 boxes rests within one tolerance") {
-  std::vector<std::string> bodies{floorBody};
-  for (int row = 0; row < 5; ++row)
-    for (int k = 0; k < 5 - row; ++k)
-      bodies.push_back(box("p" + std::to_string(row) + "_" + std::to_string(k), {0.5, 0.5, 0.5},
-                           {(k - (4 - row) / 2.0) * 1.05, 0, 0.5 + row * 1.0001}));
-  const Rest r = rest(sceneOf(R"("duration": 5, "restitution": 0.5, "friction": 0.5)", bodies));
+  const Rest r = rest(sceneOf(R"("duration": 5, "restitution": 0.5, "friction": 0.5)", pyramid(5, 1.05, 0.5)));
   INFO("deepest " << r.deepest << " m, drift " << r.drift << " m, " << r.collisions << " collisions");
   CHECK(r.deepest <= tol);
   CHECK(r.drift <= tol);
@@ -153,12 +160,7 @@ TEST_CASE("hybrid: a pyramid of 20 rows kept awake stands still, within one tole
   // (StepTuning::shockSweeps = 0: a drift of 12 mm).
   // (Its overlaps are read at the end only: the reference library at every frame's end
   // would take most of the test's time.)
-  std::vector<std::string> bodies{floorBody};
-  for (int row = 0; row < 20; ++row)
-    for (int k = 0; k < 20 - row; ++k)
-      bodies.push_back(box("p" + std::to_string(row) + "_" + std::to_string(k), {0.5, 0.5, 0.5},
-                           {(k - (19 - row) / 2.0) * 1.001, 0, 0.5001 + row * 1.0001}));
-  const Scene scene = sceneOf(R"("duration": 2, "restitution": 0.5, "friction": 0.5)", bodies);
+  const Scene scene = sceneOf(R"("duration": 2, "restitution": 0.5, "friction": 0.5)", pyramid(20, 1.001, 0.5001));
   WorldSettings awake;
   awake.tuning.settleSeconds = 1000;
   World world(scene, awake);

@@ -48,6 +48,21 @@ double response(const SolverBody& I, const SolverBody& J, const Eigen::Vector3d&
          rJ.cross(d).dot(J.inverseInertia * rJ.cross(e));
 }
 
+/// A row's effective masses between bodies I and J at its point (either may be held still:
+/// a SolverBody of no inverse mass or inertia): the normal's, and the tangent plane's 2x2
+/// block (response along t1, t2) with its size.
+void setMasses(Row& row, const SolverBody& I, const SolverBody& J) {
+  const Eigen::Vector3d rI = row.point->point - I.centre, rJ = row.point->point - J.centre;
+  const Eigen::Vector3d &n = row.d[0], &t1 = row.d[1], &t2 = row.d[2];
+  const double k = response(I, J, rI, rJ, n, n);
+  row.normalMass = k > 0 ? 1.0 / k : 0.0;
+  Eigen::Matrix2d K;
+  K << response(I, J, rI, rJ, t1, t1), response(I, J, rI, rJ, t1, t2), response(I, J, rI, rJ, t2, t1),
+      response(I, J, rI, rJ, t2, t2);
+  row.tangent = TangentBlock::of(K);
+  row.tangentScale = K.norm();
+}
+
 double kineticEnergy(const StepContext& step, const std::vector<int>& group, const std::vector<BodyState>& states) {
   double e = 0;
   for (int b : group) e += step.bodies[b].rigid.kineticEnergy(states[b]);
@@ -124,14 +139,7 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
         row.spinI[k] = I.inverseInertia * row.armI[k];
         row.spinJ[k] = J.inverseInertia * row.armJ[k];
       }
-      const double k = response(I, J, rI, rJ, n, n);
-      row.normalMass = k > 0 ? 1.0 / k : 0.0;
-      const Eigen::Vector3d &t1 = row.d[1], &t2 = row.d[2];
-      Eigen::Matrix2d K;
-      K << response(I, J, rI, rJ, t1, t1), response(I, J, rI, rJ, t1, t2), response(I, J, rI, rJ, t2, t1),
-          response(I, J, rI, rJ, t2, t2);
-      row.tangent = TangentBlock::of(K);
-      row.tangentScale = K.norm();
+      setMasses(row, I, J);
       // Speculative contact: the point may close by what separates it from rest, no more.
       row.target = -std::max(0.0, p.separation - rest) / dt;
       rows.push_back(row);
@@ -238,33 +246,25 @@ GroupSolve solveGroup(const StepContext& step, const std::vector<int>& group, st
   for (std::size_t r = 0; r < rows.size(); ++r)
     if (level[rows[r].i] >= 0 && level[rows[r].j] >= 0)
       rowsOfLevel[std::size_t(std::max(level[rows[r].i], level[rows[r].j]))].push_back(r);
+  const SolverBody still;  // a lower body, held: no inverse mass, no inverse inertia
   const auto shockPropagation = [&] {
+    if (tuning.shockSweeps == 0) return;
     std::vector<Row> held;  // one level's rows, the lower body of each held
     for (int d = 1; d <= levels; ++d) {
       const std::vector<std::size_t>& heldOf = rowsOfLevel[std::size_t(d)];  // where each came from in rows
       held.clear();
       for (std::size_t r : heldOf) {
         Row row = rows[r];
-        if (level[row.i] < d) {
+        const bool holdI = level[row.i] < d, holdJ = level[row.j] < d;
+        if (holdI) {
           row.massI = 0;
           for (Eigen::Vector3d& spin : row.spinI) spin.setZero();
         }
-        if (level[row.j] < d) {
+        if (holdJ) {
           row.massJ = 0;
           for (Eigen::Vector3d& spin : row.spinJ) spin.setZero();
         }
-        // The response with the lower body held: d.e m_j + (r_j x d) . I_j^-1 (r_j x e), as
-        // `response` with one body.
-        const auto along = [&row](int k, int l) {
-          return row.d[k].dot(row.d[l]) * (row.massI + row.massJ) + row.armI[k].dot(row.spinI[l]) +
-                 row.armJ[k].dot(row.spinJ[l]);
-        };
-        const double k = along(0, 0);
-        row.normalMass = k > 0 ? 1.0 / k : 0.0;
-        Eigen::Matrix2d K;
-        K << along(1, 1), along(1, 2), along(2, 1), along(2, 2);
-        row.tangent = TangentBlock::of(K);
-        row.tangentScale = K.norm();
+        setMasses(row, holdI ? still : solverBodies[row.i], holdJ ? still : solverBodies[row.j]);
         held.push_back(row);
       }
       for (int k = 0; k < tuning.shockSweeps; ++k) {
